@@ -1,0 +1,18 @@
+// A surface mesh exactly as read from a file: vertex positions and the faces
+// as given (polygons allowed, non-manifold configurations kept).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace unfold {
+
+struct SurfaceMesh {
+  Eigen::MatrixX3d V;                   ///< one row per vertex
+  std::vector<std::vector<int>> faces;  ///< vertex indices per face, as in the file
+};
+
+/// Fan-triangulates every face (triangles stay as they are), in face order.
+Eigen::MatrixX3i triangulate_faces(const SurfaceMesh& mesh);
+
+}  // namespace unfold
