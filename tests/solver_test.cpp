@@ -1,0 +1,146 @@
+// The local-global solver: rotation fit, global step optimality, monotone
+// energy within a cascade, and the beta bound.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "energies/unfold_energy.h"
+#include "solvers/best_rotations.h"
+#include "solvers/cascade.h"
+#include "solvers/fiedler_value.h"
+#include "solvers/local_global.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+TEST(SolverRotation, RecoversKnownRotationExactly) {
+  const TetMesh mesh = testing::grid_tet_mesh(3, 2, 2);
+  const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  const Eigen::Matrix3d R0 = testing::random_rotation(7);
+  const Eigen::MatrixX3d Q = (mesh.V * R0.transpose()).rowwise() + Eigen::RowVector3d(1, -2, 3);
+  Rotations R;
+  best_rotations(g, mesh.V, Q, &R);
+  for (const auto& Ri : R) EXPECT_LT((Ri - R0).norm(), 1e-12);
+}
+
+TEST(SolverRotation, NeverReturnsAReflection) {
+  const TetMesh mesh = testing::grid_tet_mesh(2, 2, 2);
+  const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  Eigen::MatrixX3d Q = mesh.V;
+  Q.col(0) *= -1;  // a mirror image: the best proper rotation is not the mirror
+  Rotations R;
+  best_rotations(g, mesh.V, Q, &R);
+  for (const auto& Ri : R) {
+    EXPECT_NEAR(Ri.determinant(), 1.0, 1e-12);
+    EXPECT_LT((Ri * Ri.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  }
+}
+
+TEST(SolverFiedler, MatchesDenseEigenvalues) {
+  const TetMesh mesh = testing::grid_tet_mesh(5, 3, 2);
+  const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  const Eigen::SparseMatrix<double> L = graph_laplacian(g);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(L)};
+  EXPECT_NEAR(dense.eigenvalues()(0), 0.0, 1e-10);
+  EXPECT_NEAR(fiedler_value(L), dense.eigenvalues()(1), 1e-9);
+}
+
+struct Fixture {
+  TetMesh mesh = testing::grid_tet_mesh(6, 2, 2, 0.5);
+  EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  int n = int(mesh.V.rows());
+  double lambda2 = fiedler_value(graph_laplacian(graph));
+};
+
+TEST(SolverGlobalStep, ZeroesTheEnergyGradientAtFixedRotations) {
+  Fixture f;
+  const double beta = 1.5 * f.n / f.lambda2;
+  LocalGlobalData data;
+  local_global_precomputation(f.graph, f.mesh.V, &data);
+  local_global_set_beta(beta, &data);
+  // Rotations from a bent pose, so that the global step has work to do.
+  Eigen::MatrixX3d bent = f.mesh.V;
+  for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.3 * bent(i, 0) * bent(i, 0);
+  Rotations R;
+  best_rotations(f.graph, f.mesh.V, bent, &R);
+  Eigen::MatrixX3d Q;
+  global_step(data, R, &Q);
+  Eigen::MatrixX3d grad;
+  unfold_energy(f.graph, f.mesh.V, Q, R, beta, &grad);
+  Eigen::MatrixX3d grad_at_bent;
+  unfold_energy(f.graph, f.mesh.V, bent, R, beta, &grad_at_bent);
+  EXPECT_LT(grad.norm(), 1e-9 * grad_at_bent.norm());
+  EXPECT_LT(Q.colwise().mean().norm(), 1e-12);
+}
+
+TEST(SolverGlobalStep, GlobalStepIsTheMinimiserAlongRandomDirections) {
+  Fixture f;
+  const double beta = 2.0 * f.n / f.lambda2;
+  LocalGlobalData data;
+  local_global_precomputation(f.graph, f.mesh.V, &data);
+  local_global_set_beta(beta, &data);
+  Rotations R(size_t(f.n), testing::random_rotation(3));
+  Eigen::MatrixX3d Q;
+  global_step(data, R, &Q);
+  const double e0 = unfold_energy(f.graph, f.mesh.V, Q, R, beta);
+  std::srand(11);
+  for (int trial = 0; trial < 5; ++trial) {
+    const Eigen::MatrixX3d D = 1e-2 * Eigen::MatrixX3d::Random(f.n, 3);
+    EXPECT_GT(unfold_energy(f.graph, f.mesh.V, Q + D, R, beta), e0);
+  }
+}
+
+TEST(SolverBetaBound, QuadraticPartIndefiniteBelowTheBound) {
+  Fixture f;
+  const double threshold = f.n / f.lambda2 - 1.0;  // (beta + 1) lambda_2 = n
+  LocalGlobalData data;
+  local_global_precomputation(f.graph, f.mesh.V, &data);
+  local_global_set_beta(1.01 * threshold, &data);
+  EXPECT_TRUE(energy_bounded(data));
+  EXPECT_EQ(data.negative_pivots, 1);
+  local_global_set_beta(0.99 * threshold, &data);
+  EXPECT_FALSE(energy_bounded(data));
+
+  // Below the bound the Fiedler direction lowers the energy without limit.
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(data.L)};
+  const Eigen::VectorXd fiedler = dense.eigenvectors().col(1);
+  Eigen::MatrixX3d D = Eigen::MatrixX3d::Zero(f.n, 3);
+  D.col(0) = fiedler;
+  const Rotations R(size_t(f.n), Eigen::Matrix3d::Identity());
+  auto energy_along = [&](double beta, double t) {
+    return unfold_energy(f.graph, f.mesh.V, f.mesh.V + t * D, R, beta);
+  };
+  const double below = 0.99 * threshold, above = 1.01 * threshold;
+  EXPECT_LT(energy_along(below, 1e4), energy_along(below, 1e3));
+  EXPECT_GT(energy_along(above, 1e4), energy_along(above, 1e3));
+}
+
+TEST(SolverCascade, EnergyNeverIncreasesWithinACascade) {
+  Fixture f;
+  CascadeOptions options;
+  options.beta = 1.5 * f.n / f.lambda2;
+  options.band_low = options.band_high = -1;  // run every cascade to its end
+  const CascadeResult result = run_cascade(f.graph, f.mesh.V, options);
+  ASSERT_GT(result.iterations, 4);
+  for (size_t k = 1; k < result.history.size(); ++k) {
+    if (result.history[k].cascade != result.history[k - 1].cascade) continue;
+    EXPECT_LE(result.history[k].energy,
+              result.history[k - 1].energy + 1e-9 * std::abs(result.history[k - 1].energy))
+        << "iteration " << result.history[k].iteration;
+  }
+}
+
+TEST(SolverCascade, RigidInputStaysRigidAndSpreads) {
+  // A straight bar is already unfolded: the cascade keeps it close to rigid.
+  Fixture f;
+  CascadeOptions options;
+  options.beta = 1.5 * f.n / f.lambda2;
+  const CascadeResult result = run_cascade(f.graph, f.mesh.V, options);
+  EXPECT_TRUE(result.bounded);
+  EXPECT_GT(result.edge_ratio, 0.95);
+  EXPECT_LT(result.edge_ratio, 1.3);
+}
+
+}  // namespace
+}  // namespace unfold
