@@ -50,7 +50,7 @@ CascadeResult run_cascade(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
     result.history.push_back({total, j, beta, f_e, delta});
     VLOG(1) << "iteration " << total << " cascade " << j << " beta " << beta << " energy " << f_e
             << " edge ratio " << delta;
-    if (delta >= options.band_low && delta <= options.band_high) {
+    if (delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1]) {
       result.reached_band = true;
       break;
     }

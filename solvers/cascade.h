@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "mesh/edge_graph.h"
@@ -16,8 +17,7 @@ struct CascadeOptions {
   double epsilon = 1e-4;   ///< a cascade ends when |f_e / f_s - 1| < epsilon
   int num_cascades = 4;    ///< cascades at most ("num")
   double growth = 2.0;     ///< beta factor between cascades
-  double band_low = 0.95;  ///< stop once the edge ratio is in [band_low, band_high]
-  double band_high = 1.05;
+  std::array<double, 2> edge_ratio_band = {0.95, 1.05};  ///< stop once the edge ratio is inside
 };
 
 struct IterationRecord {

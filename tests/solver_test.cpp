@@ -120,7 +120,7 @@ TEST(SolverCascade, EnergyNeverIncreasesWithinACascade) {
   Fixture f;
   CascadeOptions options;
   options.beta = 1.5 * f.n / f.lambda2;
-  options.band_low = options.band_high = -1;  // run every cascade to its end
+  options.edge_ratio_band = {-1, -1};  // run every cascade to its end
   const CascadeResult result = run_cascade(f.graph, f.mesh.V, options);
   ASSERT_GT(result.iterations, 4);
   for (size_t k = 1; k < result.history.size(); ++k) {

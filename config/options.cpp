@@ -1,0 +1,200 @@
+#include "config/options.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <sstream>
+#include <vector>
+
+#include "config/config_keys.h"
+#include "core/errors.h"
+
+namespace unfold {
+namespace {
+
+std::string describe(const YAML::Node& node) {
+  std::ostringstream out;
+  out << node;
+  return out.str();
+}
+
+void parse_into(const YAML::Node& node, const std::string& key, int* value) {
+  double number;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, number) ||
+      number != std::floor(number) || std::abs(number) > 2e9)
+    throw UsageError("config key '" + key + "' must be an integer, got '" + describe(node) + "'");
+  *value = int(number);
+}
+
+void parse_into(const YAML::Node& node, const std::string& key, double* value) {
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, *value))
+    throw UsageError("config key '" + key + "' must be a number, got '" + describe(node) + "'");
+}
+
+void parse_into(const YAML::Node& node, const std::string& key, std::string* value) {
+  if (!node.IsScalar())
+    throw UsageError("config key '" + key + "' must be a string, got '" + describe(node) + "'");
+  *value = node.Scalar();
+}
+
+void parse_into(const YAML::Node& node, const std::string& key, std::array<double, 2>* value) {
+  if (!node.IsSequence() || node.size() != 2)
+    throw UsageError("config key '" + key + "' must be a list of two numbers, got '" +
+                     describe(node) + "'");
+  for (size_t k = 0; k < 2; ++k) parse_into(node[k], key, &(*value)[k]);
+}
+
+YAML::Node to_node(int value) { return YAML::Node(value); }
+YAML::Node to_node(const std::string& value) { return YAML::Node(value); }
+// 15 significant digits: 0.95 reads back as 0.95 and prints as 0.95.
+YAML::Node to_node(double value) {
+  std::ostringstream out;
+  out << std::setprecision(15) << value;
+  return YAML::Node(out.str());
+}
+YAML::Node to_node(const std::array<double, 2>& value) {
+  YAML::Node node;
+  node.SetStyle(YAML::EmitterStyle::Flow);
+  node.push_back(to_node(value[0]));
+  node.push_back(to_node(value[1]));
+  return node;
+}
+
+struct KeyBinding {
+  std::string path;
+  std::function<void(const YAML::Node&, Options*)> parse;
+  std::function<YAML::Node(const Options&)> emit;
+};
+
+const std::vector<KeyBinding>& bindings() {
+#define UNFOLD_BIND(flag, path, member, help)                                          \
+  KeyBinding{path, [](const YAML::Node& n, Options* o) { parse_into(n, path, &o->member); }, \
+             [](const Options& o) { return to_node(o.member); }},
+  static const std::vector<KeyBinding> table = {UNFOLD_CONFIG_KEYS(UNFOLD_BIND)};
+#undef UNFOLD_BIND
+  return table;
+}
+
+const KeyBinding* find_binding(const std::string& path) {
+  for (const auto& b : bindings())
+    if (b.path == path) return &b;
+  return nullptr;
+}
+
+// Visits every leaf of a YAML mapping with its dotted path.
+void for_each_leaf(const YAML::Node& node, const std::string& prefix,
+                   const std::function<void(const std::string&, const YAML::Node&)>& visit) {
+  for (const auto& item : node) {
+    const std::string path = prefix.empty() ? item.first.as<std::string>()
+                                            : prefix + "." + item.first.as<std::string>();
+    if (item.second.IsMap())
+      for_each_leaf(item.second, path, visit);
+    else
+      visit(path, item.second);
+  }
+}
+
+YAML::Node override_value(const std::string& text) {
+  // "0.95,1.05" on a command line means the list [0.95, 1.05].
+  const bool bare_list = text.find(',') != std::string::npos && text.find('[') == std::string::npos;
+  return YAML::Load(bare_list ? "[" + text + "]" : text);
+}
+
+void require(bool ok, const std::string& key, const std::string& what) {
+  if (!ok) throw UsageError("config key '" + key + "' " + what);
+}
+
+}  // namespace
+
+Options load_options(const std::string& config_path,
+                     const std::map<std::string, std::string>& overrides) {
+  Options options;
+  auto apply = [&](const std::string& path, const YAML::Node& value, const std::string& where) {
+    const KeyBinding* binding = find_binding(path);
+    if (!binding) throw UsageError("unknown config key '" + path + "'" + where);
+    binding->parse(value, &options);
+  };
+  if (!config_path.empty()) {
+    YAML::Node root;
+    try {
+      root = YAML::LoadFile(config_path);
+    } catch (const YAML::BadFile&) {
+      throw UsageError("cannot read config file '" + config_path + "'");
+    } catch (const YAML::Exception& e) {
+      throw UsageError("invalid YAML in '" + config_path + "' at line " +
+                       std::to_string(e.mark.line + 1) + ": " + e.msg);
+    }
+    if (!root.IsNull()) {
+      if (!root.IsMap()) throw UsageError("config file '" + config_path + "' is not a mapping");
+      for_each_leaf(root, "", [&](const std::string& path, const YAML::Node& value) {
+        apply(path, value, " in '" + config_path + "'");
+      });
+    }
+  }
+  for (const auto& [path, text] : overrides) {
+    YAML::Node value;
+    try {
+      value = override_value(text);
+    } catch (const YAML::Exception&) {
+      throw UsageError("config key '" + path + "' has an unparsable value '" + text + "'");
+    }
+    apply(path, value, "");
+  }
+  validate_options(options);
+  return options;
+}
+
+void validate_options(const Options& o) {
+  require(o.method == "local_global", "method", "must be local_global, got '" + o.method + "'");
+  require(o.target_vertices == 0 || o.target_vertices >= 4, "simplify.target_vertices",
+          "must be 0 (keep all) or at least 4");
+  require(o.tet.route == "conforming", "tetrahedralize.route",
+          "must be conforming, got '" + o.tet.route + "'");
+  require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),
+          "tetrahedralize.quality", "must be 0 (off) or a finite number >= 1");
+  require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
+          "must be relative or absolute, got '" + o.beta_mode + "'");
+  require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",
+          "must be a positive finite number");
+  const CascadeOptions& c = o.cascade;
+  require(c.k_iter >= 1, "cascade.k_iter", "must be at least 1");
+  require(std::isfinite(c.epsilon) && c.epsilon >= 0, "cascade.epsilon",
+          "must be a finite number >= 0");
+  require(c.num_cascades >= 1, "cascade.num", "must be at least 1");
+  require(std::isfinite(c.growth) && c.growth >= 1, "cascade.growth",
+          "must be a finite number >= 1");
+  require(std::isfinite(c.edge_ratio_band[0]) && std::isfinite(c.edge_ratio_band[1]) &&
+              c.edge_ratio_band[0] <= c.edge_ratio_band[1],
+          "cascade.edge_ratio_band", "must be two finite numbers, low <= high");
+  const MetricsOptions& m = o.metrics;
+  require(m.stretch_exact_limit >= 0, "metrics.stretch_exact_limit", "must be >= 0");
+  require(m.stretch_samples >= 1, "metrics.stretch_samples", "must be at least 1");
+  require(m.geodesic_exact_limit >= 0, "metrics.geodesic_exact_limit", "must be >= 0");
+  require(m.geodesic_landmarks >= 1, "metrics.geodesic_landmarks", "must be at least 1");
+  require(o.threads >= 0, "threads", "must be >= 0");
+}
+
+std::string options_to_yaml(const Options& options) {
+  // Keys of one section are contiguous in UNFOLD_CONFIG_KEYS, and paths have at
+  // most two levels, so one pass emits the nested document in table order.
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  std::string open_section;
+  for (const auto& b : bindings()) {
+    const size_t dot = b.path.find('.');
+    const std::string section = dot == std::string::npos ? "" : b.path.substr(0, dot);
+    if (section != open_section) {
+      if (!open_section.empty()) out << YAML::EndMap;
+      if (!section.empty()) out << YAML::Key << section << YAML::Value << YAML::BeginMap;
+      open_section = section;
+    }
+    out << YAML::Key << b.path.substr(dot + 1) << YAML::Value << b.emit(options);
+  }
+  if (!open_section.empty()) out << YAML::EndMap;
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace unfold

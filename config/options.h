@@ -1,0 +1,38 @@
+// Run options: defaults (equal to configs/default.yaml), loading from YAML
+// with overrides, validation and the effective configuration as YAML.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "config/metrics_options.h"
+#include "solvers/cascade.h"
+#include "tetra/tetrahedralize.h"
+
+namespace unfold {
+
+struct Options {
+  std::string method = "local_global";
+  int target_vertices = 0;
+  TetOptions tet;
+  std::string beta_mode = "relative";
+  double beta_value = 1.5;
+  CascadeOptions cascade;  ///< cascade.beta is derived from beta_mode / beta_value
+  MetricsOptions metrics;
+  int threads = 0;
+};
+
+/// Options from a YAML file (or the defaults when config_path is empty), then
+/// the overrides (YAML path -> value text, e.g. "cascade.k_iter" -> "20").
+/// @throws UsageError naming the key for an unreadable file, invalid YAML, an
+///         unknown key, a wrong type or an out-of-range value
+Options load_options(const std::string& config_path,
+                     const std::map<std::string, std::string>& overrides = {});
+
+/// Checks ranges and choices. @throws UsageError naming the key.
+void validate_options(const Options& options);
+
+/// The options as a YAML document with every key (the effective configuration).
+std::string options_to_yaml(const Options& options);
+
+}  // namespace unfold

@@ -1,0 +1,62 @@
+#include "mesh/write_tet_mesh.h"
+
+#include <iomanip>
+#include <ostream>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+
+namespace unfold {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+void write_vtu(std::ostream& out, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T) {
+  out << std::setprecision(17);
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << V.rows() << "\" NumberOfCells=\""
+      << T.rows() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+      << "format=\"ascii\">\n";
+  for (Eigen::Index i = 0; i < V.rows(); ++i) out << V(i, 0) << ' ' << V(i, 1) << ' ' << V(i, 2) << '\n';
+  out << "</DataArray>\n</Points>\n<Cells>\n"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (Eigen::Index t = 0; t < T.rows(); ++t)
+    out << T(t, 0) << ' ' << T(t, 1) << ' ' << T(t, 2) << ' ' << T(t, 3) << '\n';
+  out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (Eigen::Index t = 0; t < T.rows(); ++t) out << 4 * (t + 1) << '\n';
+  out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (Eigen::Index t = 0; t < T.rows(); ++t) out << "10\n";  // VTK_TETRA
+  out << "</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+}
+
+}  // namespace
+
+void check_tet_mesh_format(const std::string& path) {
+  if (!path.empty() && !ends_with(path, ".vtu") && !ends_with(path, ".node"))
+    throw OutputError("unsupported tet mesh format '" + path + "' (use .vtu or .node)");
+}
+
+void write_tet_mesh(const std::string& path, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T) {
+  check_tet_mesh_format(path);
+  if (ends_with(path, ".vtu")) {
+    write_file_atomically(path, [&](std::ostream& out) { write_vtu(out, V, T); });
+    return;
+  }
+  // TetGen's own format, 0-based as TetGen's -z writes it.
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << std::setprecision(17) << V.rows() << " 3 0 0\n";
+    for (Eigen::Index i = 0; i < V.rows(); ++i)
+      out << i << ' ' << V(i, 0) << ' ' << V(i, 1) << ' ' << V(i, 2) << '\n';
+  });
+  const std::string ele = path.substr(0, path.size() - 5) + ".ele";
+  write_file_atomically(ele, [&](std::ostream& out) {
+    out << T.rows() << " 4 0\n";
+    for (Eigen::Index t = 0; t < T.rows(); ++t)
+      out << t << ' ' << T(t, 0) << ' ' << T(t, 1) << ' ' << T(t, 2) << ' ' << T(t, 3) << '\n';
+  });
+}
+
+}  // namespace unfold

@@ -1,0 +1,104 @@
+#include "pipeline/unfold_surface.h"
+
+#include <glog/logging.h>
+
+#include <chrono>
+
+#include "core/errors.h"
+#include "mesh/check_surface_mesh.h"
+#include "mesh/edge_graph.h"
+#include "mesh/simplify_surface_mesh.h"
+#include "metrics/geodesic_error.h"
+#include "metrics/rigidity_error.h"
+#include "metrics/stretch_error.h"
+#include "solvers/fiedler_value.h"
+
+namespace unfold {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The solver divides by rest edge lengths and needs one connected graph.
+void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {
+  const int components = connected_components(graph);
+  if (components != 1)
+    throw NumericalError("the tet mesh's edge graph has " + std::to_string(components) +
+                         " connected components; unfolding needs one");
+  for (int e = 0; e < graph.num_edges(); ++e)
+    if ((V.row(graph.edges(e, 0)) - V.row(graph.edges(e, 1))).norm() == 0)
+      throw NumericalError("tet mesh edge " + std::to_string(graph.edges(e, 0)) + "-" +
+                           std::to_string(graph.edges(e, 1)) + " has zero length");
+}
+
+}  // namespace
+
+UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
+  validate_options(options);
+  UnfoldResult result;
+  const SurfaceReport report = check_surface_mesh(input);
+  result.warnings = report.warnings;
+  for (const auto& w : report.warnings) LOG(WARNING) << w;
+
+  if (options.target_vertices > 0 && options.target_vertices < input.V.rows()) {
+    result.surface = simplify_surface_mesh(input, options.target_vertices);
+    LOG(INFO) << "simplified " << input.V.rows() << " -> " << result.surface.V.rows()
+              << " vertices";
+    check_surface_mesh(result.surface);
+  } else {
+    result.surface = input;
+  }
+
+  result.tets = tetrahedralize(result.surface, options.tet, &result.tet_report);
+  LOG(INFO) << "tetrahedralized (" << result.tet_report.route << "): " << result.tets.V.rows()
+            << " vertices, " << result.tets.T.rows() << " tets in " << result.tet_report.seconds
+            << " s";
+
+  const auto start = std::chrono::steady_clock::now();
+  const EdgeGraph graph = build_edge_graph(int(result.tets.V.rows()), result.tets.T);
+  check_tet_graph(graph, result.tets.V);
+  result.num_edges = graph.num_edges();
+  const int n = graph.num_vertices;
+  result.lambda2 = fiedler_value(graph_laplacian(graph));
+  const double bound = n / result.lambda2;
+  result.beta_start = options.beta_mode == "relative" ? options.beta_value * bound
+                                                      : options.beta_value;
+  LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = "
+            << result.lambda2 << ", n/lambda_2 = " << bound << ", starting beta = "
+            << result.beta_start;
+  CascadeOptions cascade = options.cascade;
+  cascade.beta = result.beta_start;
+  result.cascade = run_cascade(graph, result.tets.V, cascade);
+  result.seconds_unfold = seconds_since(start);
+  if (!result.cascade.reached_band)
+    result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
+                              " did not reach the band within " +
+                              std::to_string(options.cascade.num_cascades) + " cascades");
+  if (!result.cascade.bounded)
+    result.warnings.push_back("beta was below the bound n/lambda_2 - 1 in some cascade");
+
+  // Back where the input was: the solve fixes only shape, not translation.
+  result.tet_canonical = result.cascade.positions;
+  result.tet_canonical.rowwise() += result.tets.V.colwise().mean();
+  result.canonical.faces = result.surface.faces;
+  result.canonical.V = result.tet_canonical.topRows(result.tets.num_surface_vertices);
+
+  const auto metrics_start = std::chrono::steady_clock::now();
+  const Eigen::MatrixX3d& P = result.tets.V;
+  const Eigen::MatrixX3d& Q = result.tet_canonical;
+  UnfoldMetrics& m = result.metrics;
+  m.E_rig = rigidity_error(graph, P, Q).mean;
+  const StretchError str = stretch_error(P, Q, options.metrics.stretch_exact_limit,
+                                         options.metrics.stretch_samples);
+  m.E_str = str.value;
+  m.E_str_exact = str.exact;
+  const GeodesicError geo = geodesic_error(graph, P, Q, options.metrics.geodesic_exact_limit,
+                                           options.metrics.geodesic_landmarks);
+  m.E_geo = geo.value;
+  m.E_geo_exact = geo.exact;
+  m.seconds = seconds_since(metrics_start);
+  return result;
+}
+
+}  // namespace unfold

@@ -1,0 +1,47 @@
+// The whole pipeline on one surface: check, simplify, tetrahedralize, unfold,
+// measure. Apps call this and do the file input/output around it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "config/options.h"
+#include "mesh/surface_mesh.h"
+#include "mesh/tet_mesh.h"
+#include "solvers/cascade.h"
+#include "tetra/tetrahedralize.h"
+
+namespace unfold {
+
+struct UnfoldMetrics {
+  double E_rig = 0;        ///< Eq. 8 over the tet edges
+  double E_str = 0;        ///< Eq. 9 over the tet vertices
+  bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
+  double E_geo = 0;        ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
+  bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
+  double seconds = 0;
+};
+
+struct UnfoldResult {
+  SurfaceMesh surface;             ///< the surface unfolded (the input, or its simplification)
+  SurfaceMesh canonical;           ///< same faces, canonical positions
+  TetMesh tets;                    ///< rest tet mesh
+  Eigen::MatrixX3d tet_canonical;  ///< canonical positions of every tet vertex
+  TetReport tet_report;
+  int num_edges = 0;
+  double lambda2 = 0;
+  double beta_start = 0;
+  CascadeResult cascade;
+  UnfoldMetrics metrics;
+  double seconds_unfold = 0;       ///< lambda_2 and the cascade
+  std::vector<std::string> warnings;
+};
+
+/// Unfolds a surface into its canonical pose.
+/// @param surface  the input surface, as read (it is checked here)
+/// @param options  validated options (load_options)
+/// @throws InputError for a surface that fails the checks, NumericalError when
+///         tetrahedralization or the solve fails, UsageError for bad options
+UnfoldResult unfold_surface(const SurfaceMesh& surface, const Options& options);
+
+}  // namespace unfold

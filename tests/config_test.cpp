@@ -1,0 +1,77 @@
+// Config loading: defaults, the shipped default.yaml, overrides, and errors
+// that name the key.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "config/options.h"
+#include "core/errors.h"
+
+namespace unfold {
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+void expect_usage_error(const std::string& yaml, const std::string& words) {
+  const std::string path = write_temp("config.yaml", yaml);
+  try {
+    load_options(path);
+    FAIL() << "no error for: " << yaml;
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+TEST(Config, ShippedDefaultEqualsBuiltInDefaults) {
+  const Options shipped = load_options(UNFOLD_SOURCE_DIR "/configs/default.yaml");
+  EXPECT_EQ(options_to_yaml(shipped), options_to_yaml(Options{}));
+  EXPECT_NE(options_to_yaml(shipped).find("k_iter: 15"), std::string::npos);
+  EXPECT_NE(options_to_yaml(shipped).find("edge_ratio_band: [0.95, 1.05]"), std::string::npos);
+}
+
+TEST(Config, EffectiveYamlRoundTrips) {
+  Options o;
+  o.cascade.k_iter = 7;
+  o.cascade.edge_ratio_band = {0.9, 1.1};
+  o.beta_mode = "absolute";
+  o.beta_value = 5e5;
+  const std::string path = write_temp("roundtrip.yaml", options_to_yaml(o));
+  EXPECT_EQ(options_to_yaml(load_options(path)), options_to_yaml(o));
+}
+
+TEST(Config, OverridesWinOverTheFile) {
+  const std::string path = write_temp("k.yaml", "cascade:\n  k_iter: 9\n");
+  const Options o = load_options(path, {{"cascade.k_iter", "20"},
+                                        {"cascade.edge_ratio_band", "0.9,1.2"},
+                                        {"beta.value", "2.5"}});
+  EXPECT_EQ(o.cascade.k_iter, 20);
+  EXPECT_EQ(o.cascade.edge_ratio_band[0], 0.9);
+  EXPECT_EQ(o.cascade.edge_ratio_band[1], 1.2);
+  EXPECT_EQ(o.beta_value, 2.5);
+}
+
+TEST(Config, ErrorsNameTheKey) {
+  expect_usage_error("cascade:\n  kiter: 3\n", "unknown config key 'cascade.kiter'");
+  expect_usage_error("cascade:\n  k_iter: abc\n", "'cascade.k_iter' must be an integer");
+  expect_usage_error("cascade:\n  k_iter: 2.5\n", "'cascade.k_iter' must be an integer");
+  expect_usage_error("cascade:\n  k_iter: 0\n", "'cascade.k_iter' must be at least 1");
+  expect_usage_error("beta:\n  value: -1\n", "'beta.value' must be a positive");
+  expect_usage_error("beta:\n  value: .nan\n", "'beta.value' must be a positive");
+  expect_usage_error("beta:\n  mode: sideways\n", "'beta.mode' must be relative or absolute");
+  expect_usage_error("cascade:\n  edge_ratio_band: [1.1, 0.9]\n", "'cascade.edge_ratio_band'");
+  expect_usage_error("cascade: [1, 2\n", "invalid YAML");
+  expect_usage_error("- 1\n- 2\n", "not a mapping");
+}
+
+TEST(Config, MissingFileAndBadOverride) {
+  EXPECT_THROW(load_options("/nonexistent/unfold.yaml"), UsageError);
+  EXPECT_THROW(load_options("", {{"cascade.nmu", "3"}}), UsageError);
+  EXPECT_THROW(load_options("", {{"cascade.num", "[1"}}), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
