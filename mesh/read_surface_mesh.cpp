@@ -435,7 +435,7 @@ SurfaceMesh read_stl(std::istream& in, const std::string& path, std::uintmax_t f
     in.read(end.data(), std::streamsize(tail));
     if (end.find("endsolid") == std::string::npos) fail(path, "truncated ASCII STL (no endsolid)");
   }
-  return read_with_openmesh(path, -1, binary ? triangles : -1);
+  return read_with_openmesh(path, -1, binary ? (long long)triangles : -1);
 }
 
 }  // namespace

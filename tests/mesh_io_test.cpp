@@ -72,6 +72,62 @@ TEST(MeshIoTest, NonManifoldFacesAreKeptInEveryFormat) {
   }
 }
 
+// Reads `path` expecting an InputError whose one-line message names the file
+// and contains `words`.
+void expect_read_error(const std::string& path, const std::string& words) {
+  const std::string message = error_message<InputError>([&] { read_surface_mesh(path); });
+  EXPECT_TRUE(Contains(message, "'" + path + "'"));
+  EXPECT_TRUE(Contains(message, words));
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+template <typename T>
+void append(std::string* bytes, T value) {
+  bytes->append(reinterpret_cast<const char*>(&value), sizeof(value));
+}
+
+TEST(MeshIoTest, BinaryPlyOffAndAsciiStlGoThroughOpenMeshKeepingAllFaces) {
+  TempDir dir;
+  const SurfaceMesh pages = test::three_pages();
+  std::string vertices, faces;
+  for (Eigen::Index i = 0; i < pages.V.rows(); ++i)
+    for (int k = 0; k < 3; ++k) append(&vertices, float(pages.V(i, k)));
+  for (const auto& face : pages.faces) {
+    append(&faces, uint8_t(face.size()));
+    for (int v : face) append(&faces, int32_t(v));
+  }
+  const std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 5\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 3\n"
+      "property list uchar int vertex_indices\nend_header\n" +
+      vertices + faces;
+  write_bytes(dir.file("pages.ply"), ply);
+  SurfaceMesh back = read_surface_mesh(dir.file("pages.ply"));
+  EXPECT_EQ(back.V, pages.V);
+  EXPECT_EQ(back.faces, pages.faces);
+  write_bytes(dir.file("short.ply"), ply.substr(0, ply.size() - 5));
+  expect_read_error(dir.file("short.ply"), "cannot parse");
+
+  std::string off = "OFF BINARY\n";
+  for (int32_t count : {5, 3, 0}) append(&off, count);
+  off += vertices;
+  for (const auto& face : pages.faces) {
+    append(&off, int32_t(face.size()));
+    for (int v : face) append(&off, int32_t(v));
+  }
+  write_bytes(dir.file("pages.off"), off);
+  back = read_surface_mesh(dir.file("pages.off"));
+  EXPECT_EQ(back.V, pages.V);
+  EXPECT_EQ(back.faces, pages.faces);
+
+  write_bytes(dir.file("tri.stl"),
+              "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+              "vertex 0 1 0\nendloop\nendfacet\nendsolid t\n");
+  back = read_surface_mesh(dir.file("tri.stl"));
+  EXPECT_EQ(back.V.rows(), 3);
+  EXPECT_EQ(back.faces, (std::vector<std::vector<int>>{{0, 1, 2}}));
+}
+
 TEST(MeshIoTest, ReadsOffVariantsCommentsAndObjIndexForms) {
   TempDir dir;
   write_bytes(dir.file("c.off"),
@@ -96,15 +152,6 @@ TEST(MeshIoTest, NanCoordinatesAreReadAndRejectedByTheCheck) {
   const SurfaceMesh mesh = read_surface_mesh(dir.file("nan.off"));
   EXPECT_TRUE(Contains(error_message<InputError>([&] { check_surface_mesh(mesh); }),
                        "vertex 1 has a non-finite coordinate (nan)"));
-}
-
-// Reads `path` expecting an InputError whose one-line message names the file
-// and contains `words`.
-void expect_read_error(const std::string& path, const std::string& words) {
-  const std::string message = error_message<InputError>([&] { read_surface_mesh(path); });
-  EXPECT_TRUE(Contains(message, "'" + path + "'"));
-  EXPECT_TRUE(Contains(message, words));
-  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
 }
 
 TEST(MeshIoTest, MissingFileAndUnsupportedExtensionsThrow) {
