@@ -15,9 +15,9 @@ namespace unfold {
 namespace {
 
 TEST(SolverRotation, RecoversKnownRotationExactly) {
-  const TetMesh mesh = testing::grid_tet_mesh(3, 2, 2);
+  const TetMesh mesh = test::grid_tet_mesh(3, 2, 2);
   const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
-  const Eigen::Matrix3d R0 = testing::random_rotation(7);
+  const Eigen::Matrix3d R0 = test::random_rotation(7);
   const Eigen::MatrixX3d Q = (mesh.V * R0.transpose()).rowwise() + Eigen::RowVector3d(1, -2, 3);
   Rotations R;
   best_rotations(g, mesh.V, Q, &R);
@@ -25,7 +25,7 @@ TEST(SolverRotation, RecoversKnownRotationExactly) {
 }
 
 TEST(SolverRotation, NeverReturnsAReflection) {
-  const TetMesh mesh = testing::grid_tet_mesh(2, 2, 2);
+  const TetMesh mesh = test::grid_tet_mesh(2, 2, 2);
   const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
   Eigen::MatrixX3d Q = mesh.V;
   Q.col(0) *= -1;  // a mirror image: the best proper rotation is not the mirror
@@ -38,7 +38,7 @@ TEST(SolverRotation, NeverReturnsAReflection) {
 }
 
 TEST(SolverFiedler, MatchesDenseEigenvalues) {
-  const TetMesh mesh = testing::grid_tet_mesh(5, 3, 2);
+  const TetMesh mesh = test::grid_tet_mesh(5, 3, 2);
   const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
   const Eigen::SparseMatrix<double> L = graph_laplacian(g);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(L)};
@@ -47,7 +47,7 @@ TEST(SolverFiedler, MatchesDenseEigenvalues) {
 }
 
 struct Fixture {
-  TetMesh mesh = testing::grid_tet_mesh(6, 2, 2, 0.5);
+  TetMesh mesh = test::grid_tet_mesh(6, 2, 2, 0.5);
   EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
   int n = int(mesh.V.rows());
   double lambda2 = fiedler_value(graph_laplacian(graph));
@@ -80,7 +80,7 @@ TEST(SolverGlobalStep, GlobalStepIsTheMinimiserAlongRandomDirections) {
   LocalGlobalData data;
   local_global_precomputation(f.graph, f.mesh.V, &data);
   local_global_set_beta(beta, &data);
-  Rotations R(size_t(f.n), testing::random_rotation(3));
+  Rotations R(size_t(f.n), test::random_rotation(3));
   Eigen::MatrixX3d Q;
   global_step(data, R, &Q);
   const double e0 = unfold_energy(f.graph, f.mesh.V, Q, R, beta);

@@ -1,0 +1,29 @@
+// Validates a surface mesh before unfold builds anything on it: fatal defects
+// throw, tolerable ones are counted and described.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh/surface_mesh.h"
+
+namespace unfold {
+
+/// Tolerable defects found by check_surface_mesh.
+struct SurfaceReport {
+  int num_boundary_edges = 0;         ///< edges used by exactly one face (open surface)
+  int num_nonmanifold_edges = 0;      ///< edges used by more than two faces
+  int num_misoriented_edges = 0;      ///< two-face edges both faces traverse the same way
+  std::vector<std::string> warnings;  ///< one line per kind of defect, with an example
+};
+
+/// Checks a mesh, in this order, and throws InputError (one line, naming the
+/// vertex or face) at the first fatal defect: empty mesh; non-finite
+/// coordinate; face with fewer than 3 vertices; face index out of range; face
+/// repeating a vertex; zero-area face (below 1e-12 x squared bounding-box
+/// diagonal); vertex used by no face; more than one connected component.
+/// @param mesh any mesh, e.g. straight from read_surface_mesh.
+/// @return counts and warnings for boundary, non-manifold and misoriented edges.
+SurfaceReport check_surface_mesh(const SurfaceMesh& mesh);
+
+}  // namespace unfold
