@@ -47,8 +47,8 @@ int run() {
   const unfold::Options options = unfold::load_options(FLAGS_config, config_overrides());
   if (options.threads > 0) omp_set_num_threads(options.threads);
   // Refuse unsupported output formats before any work.
-  unfold::check_surface_mesh_format(FLAGS_output);
-  unfold::check_surface_mesh_format(FLAGS_input_copy);
+  for (const std::string& path : {FLAGS_output, FLAGS_input_copy})
+    if (!path.empty()) unfold::check_surface_mesh_format(path);
   unfold::check_tet_mesh_format(FLAGS_tet_output);
 
   unfold::SurfaceMesh surface;

@@ -96,19 +96,25 @@ void write_stl(std::ostream& out, const SurfaceMesh& mesh, const Eigen::MatrixX3
 
 }  // namespace
 
+MeshFormat check_surface_mesh_format(const std::string& path) {
+  const std::optional<MeshFormat> format = mesh_format_from_path(path);
+  if (!format)
+    throw OutputError("cannot write '" + path + "': " + describe_unsupported_extension(path));
+  return *format;
+}
+
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh) {
   const auto reject = [&](const std::string& what) {
     throw OutputError("cannot write '" + path + "': " + what);
   };
-  const std::optional<MeshFormat> format = mesh_format_from_path(path);
-  if (!format) reject(describe_unsupported_extension(path));
+  const MeshFormat format = check_surface_mesh_format(path);
   for (size_t f = 0; f < mesh.faces.size(); ++f)
     for (int v : mesh.faces[f])
       if (v < 0 || v >= mesh.V.rows())
         reject("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
                " but the mesh has " + std::to_string(mesh.V.rows()) + " vertices");
 
-  switch (*format) {
+  switch (format) {
     case MeshFormat::kOff:
       return write_file_atomically(path, [&](std::ostream& out) { write_off(out, mesh); });
     case MeshFormat::kObj:

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "mesh/mesh_format.h"
 #include "mesh/surface_mesh.h"
 
 namespace unfold {
@@ -18,5 +19,10 @@ namespace unfold {
 ///         index out of range (both detected before anything is written), or
 ///         when writing fails.
 void write_surface_mesh(const std::string& path, const SurfaceMesh& mesh);
+
+/// The format write_surface_mesh would use for `path`, so callers can refuse a
+/// bad output name before doing any work.
+/// @throws OutputError naming `path` for an unsupported extension
+MeshFormat check_surface_mesh_format(const std::string& path);
 
 }  // namespace unfold

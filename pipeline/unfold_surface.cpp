@@ -38,6 +38,10 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   validate_options(options);
   UnfoldResult result;
   const SurfaceReport report = check_surface_mesh(input);
+  // A tet mesh needs a closed surface: holes are fatal, the rest is tolerated.
+  if (report.num_boundary_edges > 0)
+    throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
+                     " boundary edges); unfold needs a closed surface");
   result.warnings = report.warnings;
   for (const auto& w : report.warnings) LOG(WARNING) << w;
 
