@@ -1,5 +1,6 @@
 #include "solvers/best_rotations.h"
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 namespace unfold {

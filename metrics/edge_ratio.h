@@ -1,0 +1,17 @@
+// The paper's stopping ratio delta (Algorithm 1): mean relative edge length.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mesh/edge_graph.h"
+
+namespace unfold {
+
+/// delta = (1/m) sum_e |q_i - q_j| / |p_i - p_j| over the m edges (i, j) of the graph.
+/// @param P rest positions (n x 3), n = graph.num_vertices
+/// @param Q deformed positions (n x 3)
+/// @throws UsageError if the sizes disagree
+/// @throws InputError if the graph has no edges or an edge has zero rest length
+double edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q);
+
+}  // namespace unfold
