@@ -1,16 +1,13 @@
 // unfold: a surface mesh in, its canonical pose out.
 // Flags and config only; the work is unfold_surface() in the library.
-#include <gflags/gflags.h>
-#include <glog/logging.h>
 #include <omp.h>
 
 #include <cstdio>
-#include <iostream>
 #include <map>
 
+#include "apps/app_main.h"
 #include "config/config_keys.h"
 #include "config/options.h"
-#include "core/errors.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
@@ -20,8 +17,10 @@
 
 DEFINE_string(input, "",
               "surface mesh to unfold (.off .obj .ply .stl); empty: the built-in demo shape");
-DEFINE_string(demo_pose, "0", "pose of the built-in demo shape when --input is empty: rest, 0, 1, 2");
-DEFINE_string(output, "", "canonical surface (.off .obj .ply .stl): the input's vertices and faces");
+DEFINE_string(demo_pose, "0",
+              "pose of the built-in demo shape when --input is empty: rest, 0, 1, 2");
+DEFINE_string(output, "",
+              "canonical surface (.off .obj .ply .stl): the input's vertices and faces");
 DEFINE_string(input_copy, "", "also write the surface that was unfolded (e.g. the demo shape)");
 DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (TetGen .node/.ele)");
 DEFINE_string(metrics_json, "", "metrics, timings and the per-iteration history as JSON");
@@ -82,26 +81,9 @@ int run() {
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(
       "unfold a non-rigid shape into its canonical pose\n"
-      "  unfold --input shape.off --output canonical.off [--metrics_json m.json] [--config c.yaml]\n"
-      "  every config key can also be given as a flag (see --help)");
+      "  unfold --input shape.off --output canonical.off [--metrics_json m.json] [--config "
+      "c.yaml]\n"
+      "  without --input it unfolds the built-in demo shape; every config key is also a flag");
   gflags::SetVersionString("0.1.0");
-  FLAGS_logtostderr = true;
-  gflags::ParseCommandLineFlags(&argc, &argv, true);
-  google::InitGoogleLogging(argv[0]);
-  if (argc > 1) {
-    std::fprintf(stderr, "unfold: error: unexpected argument '%s' (flags start with --)\n", argv[1]);
-    return 2;
-  }
-  try {
-    return run();
-  } catch (const unfold::Error& e) {
-    std::fprintf(stderr, "unfold: error: %s\n", e.what());
-    return e.exit_code();
-  } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "unfold: error: out of memory\n");
-    return 4;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "unfold: error: internal error: %s\n", e.what());
-    return 1;
-  }
+  return unfold::app::run_main("unfold", argc, argv, run);
 }

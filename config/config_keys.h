@@ -5,7 +5,7 @@
 #pragma once
 
 // X(flag, yaml path, member of unfold::Options, help)
-#define UNFOLD_CONFIG_KEYS(X)                                                                   \
+#define UNFOLD_CONFIG_KEYS(X)                                                                  \
   X(method, "method", method, "solver: local_global")                                          \
   X(target_vertices, "simplify.target_vertices", target_vertices,                              \
     "simplify the surface to about this many vertices first; 0 keeps all")                     \
@@ -22,12 +22,12 @@
   X(beta_growth, "cascade.growth", cascade.growth, "beta factor from one cascade to the next") \
   X(edge_ratio_band, "cascade.edge_ratio_band", cascade.edge_ratio_band,                       \
     "stop when the mean edge-length ratio is inside [low, high]")                              \
-  X(stretch_exact_limit, "metrics.stretch_exact_limit", metrics.stretch_exact_limit,           \
+  X(stretch_exact_limit, "metrics.stretch_exact_limit", stretch_metric.exact_limit,            \
     "E_str over all pairs up to this many vertices, sampled above")                            \
-  X(stretch_samples, "metrics.stretch_samples", metrics.stretch_samples,                       \
+  X(stretch_samples, "metrics.stretch_samples", stretch_metric.sample_pairs,                   \
     "random pairs for E_str above the exact limit")                                            \
-  X(geodesic_exact_limit, "metrics.geodesic_exact_limit", metrics.geodesic_exact_limit,        \
+  X(geodesic_exact_limit, "metrics.geodesic_exact_limit", geodesic_metric.exact_limit,         \
     "E_geo from all-pairs geodesics up to this many vertices")                                 \
-  X(geodesic_landmarks, "metrics.geodesic_landmarks", metrics.geodesic_landmarks,              \
+  X(geodesic_landmarks, "metrics.geodesic_landmarks", geodesic_metric.sources,                 \
     "geodesic source vertices for E_geo above the exact limit")                                \
   X(threads, "threads", threads, "worker threads; 0 uses every core")

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -20,12 +21,19 @@ std::string describe(const YAML::Node& node) {
   return out.str();
 }
 
-void parse_into(const YAML::Node& node, const std::string& key, int* value) {
+template <typename Integer>
+void parse_integer(const YAML::Node& node, const std::string& key, Integer* value) {
   double number;
   if (!node.IsScalar() || !YAML::convert<double>::decode(node, number) ||
-      number != std::floor(number) || std::abs(number) > 2e9)
+      number != std::floor(number) || std::abs(number) > double(std::numeric_limits<int>::max()))
     throw UsageError("config key '" + key + "' must be an integer, got '" + describe(node) + "'");
-  *value = int(number);
+  *value = Integer(number);
+}
+void parse_into(const YAML::Node& node, const std::string& key, int* value) {
+  parse_integer(node, key, value);
+}
+void parse_into(const YAML::Node& node, const std::string& key, int64_t* value) {
+  parse_integer(node, key, value);
 }
 
 void parse_into(const YAML::Node& node, const std::string& key, double* value) {
@@ -47,6 +55,7 @@ void parse_into(const YAML::Node& node, const std::string& key, std::array<doubl
 }
 
 YAML::Node to_node(int value) { return YAML::Node(value); }
+YAML::Node to_node(int64_t value) { return YAML::Node(value); }
 YAML::Node to_node(const std::string& value) { return YAML::Node(value); }
 // 15 significant digits: 0.95 reads back as 0.95 and prints as 0.95.
 YAML::Node to_node(double value) {
@@ -69,7 +78,7 @@ struct KeyBinding {
 };
 
 const std::vector<KeyBinding>& bindings() {
-#define UNFOLD_BIND(flag, path, member, help)                                          \
+#define UNFOLD_BIND(flag, path, member, help)                                                \
   KeyBinding{path, [](const YAML::Node& n, Options* o) { parse_into(n, path, &o->member); }, \
              [](const Options& o) { return to_node(o.member); }},
   static const std::vector<KeyBinding> table = {UNFOLD_CONFIG_KEYS(UNFOLD_BIND)};
@@ -87,8 +96,8 @@ const KeyBinding* find_binding(const std::string& path) {
 void for_each_leaf(const YAML::Node& node, const std::string& prefix,
                    const std::function<void(const std::string&, const YAML::Node&)>& visit) {
   for (const auto& item : node) {
-    const std::string path = prefix.empty() ? item.first.as<std::string>()
-                                            : prefix + "." + item.first.as<std::string>();
+    const std::string path =
+        prefix.empty() ? item.first.as<std::string>() : prefix + "." + item.first.as<std::string>();
     if (item.second.IsMap())
       for_each_leaf(item.second, path, visit);
     else
@@ -168,11 +177,10 @@ void validate_options(const Options& o) {
   require(std::isfinite(c.edge_ratio_band[0]) && std::isfinite(c.edge_ratio_band[1]) &&
               c.edge_ratio_band[0] <= c.edge_ratio_band[1],
           "cascade.edge_ratio_band", "must be two finite numbers, low <= high");
-  const MetricsOptions& m = o.metrics;
-  require(m.stretch_exact_limit >= 0, "metrics.stretch_exact_limit", "must be >= 0");
-  require(m.stretch_samples >= 1, "metrics.stretch_samples", "must be at least 1");
-  require(m.geodesic_exact_limit >= 0, "metrics.geodesic_exact_limit", "must be >= 0");
-  require(m.geodesic_landmarks >= 1, "metrics.geodesic_landmarks", "must be at least 1");
+  require(o.stretch_metric.exact_limit >= 0, "metrics.stretch_exact_limit", "must be >= 0");
+  require(o.stretch_metric.sample_pairs >= 2, "metrics.stretch_samples", "must be at least 2");
+  require(o.geodesic_metric.exact_limit >= 0, "metrics.geodesic_exact_limit", "must be >= 0");
+  require(o.geodesic_metric.sources >= 1, "metrics.geodesic_landmarks", "must be at least 1");
   require(o.threads >= 0, "threads", "must be >= 0");
 }
 

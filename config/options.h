@@ -5,7 +5,8 @@
 #include <map>
 #include <string>
 
-#include "config/metrics_options.h"
+#include "metrics/geodesic_error.h"
+#include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
 #include "tetra/tetrahedralize.h"
 
@@ -18,7 +19,8 @@ struct Options {
   std::string beta_mode = "relative";
   double beta_value = 1.5;
   CascadeOptions cascade;  ///< cascade.beta is derived from beta_mode / beta_value
-  MetricsOptions metrics;
+  StretchErrorOptions stretch_metric;
+  GeodesicErrorOptions geodesic_metric;
   int threads = 0;
 };
 

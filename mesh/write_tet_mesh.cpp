@@ -10,7 +10,8 @@ namespace unfold {
 namespace {
 
 bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 void write_vtu(std::ostream& out, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T) {
@@ -20,7 +21,8 @@ void write_vtu(std::ostream& out, const Eigen::MatrixX3d& V, const Eigen::Matrix
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << V.rows() << "\" NumberOfCells=\""
       << T.rows() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
       << "format=\"ascii\">\n";
-  for (Eigen::Index i = 0; i < V.rows(); ++i) out << V(i, 0) << ' ' << V(i, 1) << ' ' << V(i, 2) << '\n';
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+    out << V(i, 0) << ' ' << V(i, 1) << ' ' << V(i, 2) << '\n';
   out << "</DataArray>\n</Points>\n<Cells>\n"
       << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (Eigen::Index t = 0; t < T.rows(); ++t)

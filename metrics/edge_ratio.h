@@ -1,4 +1,4 @@
-// The paper's delta (Algorithm 1): the mean over edges of deformed / rest length.
+// The paper's stopping ratio delta (Algorithm 1): mean relative edge length.
 #pragma once
 
 #include <Eigen/Core>
@@ -7,8 +7,11 @@
 
 namespace unfold {
 
-/// (1/m) sum_e |q_i - q_j| / |p_i - p_j| over the graph's edges.
-/// @pre no edge of zero rest length
+/// delta = (1/m) sum_e |q_i - q_j| / |p_i - p_j| over the m edges (i, j) of the graph.
+/// @param P rest positions (n x 3), n = graph.num_vertices
+/// @param Q deformed positions (n x 3)
+/// @throws UsageError if the sizes disagree
+/// @throws InputError if the graph has no edges or an edge has zero rest length
 double edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q);
 
 }  // namespace unfold

@@ -68,8 +68,7 @@ void write_metrics_json(const std::string& path, const UnfoldResult& r, const Op
         << "  \"seconds_metrics\": " << number(m.seconds) << ",\n"
         << "  \"method\": " << quoted(options.method) << ",\n"
         << "  \"warnings\": [";
-    for (size_t k = 0; k < r.warnings.size(); ++k)
-      out << (k ? ", " : "") << quoted(r.warnings[k]);
+    for (size_t k = 0; k < r.warnings.size(); ++k) out << (k ? ", " : "") << quoted(r.warnings[k]);
     out << "],\n  \"history\": [\n";
     for (size_t k = 0; k < c.history.size(); ++k) {
       const IterationRecord& h = c.history[k];

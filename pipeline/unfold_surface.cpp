@@ -66,11 +66,10 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   const int n = graph.num_vertices;
   result.lambda2 = fiedler_value(graph_laplacian(graph));
   const double bound = n / result.lambda2;
-  result.beta_start = options.beta_mode == "relative" ? options.beta_value * bound
-                                                      : options.beta_value;
-  LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = "
-            << result.lambda2 << ", n/lambda_2 = " << bound << ", starting beta = "
-            << result.beta_start;
+  result.beta_start =
+      options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
+  LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << result.lambda2
+            << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start;
   CascadeOptions cascade = options.cascade;
   cascade.beta = result.beta_start;
   result.cascade = run_cascade(graph, result.tets.V, cascade);
@@ -93,12 +92,10 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   const Eigen::MatrixX3d& Q = result.tet_canonical;
   UnfoldMetrics& m = result.metrics;
   m.E_rig = rigidity_error(graph, P, Q).mean;
-  const StretchError str = stretch_error(P, Q, options.metrics.stretch_exact_limit,
-                                         options.metrics.stretch_samples);
+  const StretchError str = stretch_error(P, Q, options.stretch_metric);
   m.E_str = str.value;
   m.E_str_exact = str.exact;
-  const GeodesicError geo = geodesic_error(graph, P, Q, options.metrics.geodesic_exact_limit,
-                                           options.metrics.geodesic_landmarks);
+  const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
   m.E_geo = geo.value;
   m.E_geo_exact = geo.exact;
   m.seconds = seconds_since(metrics_start);

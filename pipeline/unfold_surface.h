@@ -14,10 +14,10 @@
 namespace unfold {
 
 struct UnfoldMetrics {
-  double E_rig = 0;        ///< Eq. 8 over the tet edges
-  double E_str = 0;        ///< Eq. 9 over the tet vertices
+  double E_rig = 0;         ///< Eq. 8 over the tet edges
+  double E_str = 0;         ///< Eq. 9 over the tet vertices
   bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
-  double E_geo = 0;        ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
+  double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
   double seconds = 0;
 };
@@ -33,7 +33,7 @@ struct UnfoldResult {
   double beta_start = 0;
   CascadeResult cascade;
   UnfoldMetrics metrics;
-  double seconds_unfold = 0;       ///< lambda_2 and the cascade
+  double seconds_unfold = 0;  ///< lambda_2 and the cascade
   std::vector<std::string> warnings;
 };
 

@@ -13,7 +13,6 @@
 
 namespace unfold::test {
 
-
 /// Regular tetrahedron, faces oriented outwards.
 inline SurfaceMesh tetrahedron() {
   SurfaceMesh m;
@@ -76,7 +75,6 @@ inline SurfaceMesh three_pages() {
   m.faces = {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}};
   return m;
 }
-
 
 /// A box of nx x ny x nz cubes, each split into 6 tetrahedra around its main diagonal.
 inline TetMesh grid_tet_mesh(int nx, int ny, int nz, double spacing = 1.0) {

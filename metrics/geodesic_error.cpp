@@ -1,0 +1,63 @@
+#include "metrics/geodesic_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "core/errors.h"
+#include "metrics/graph_geodesics.h"
+
+namespace unfold {
+
+GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                             const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options) {
+  const int n = graph.num_vertices;
+  if (P.rows() != n || Q.rows() != n || n < 2)
+    throw UsageError("geodesic_error: need P and Q with one row per graph vertex, n >= 2");
+  if (options.exact_limit < 0 || options.sources < 1)
+    throw UsageError("geodesic_error: need exact_limit >= 0 and sources >= 1");
+  GeodesicError result;
+  result.exact = n <= options.exact_limit;
+  std::vector<int> sources(static_cast<size_t>(n));
+  std::iota(sources.begin(), sources.end(), 0);
+  if (!result.exact) {
+    // Partial Fisher-Yates: the first k entries become a uniform k-subset.
+    const int k = std::min(options.sources, n);
+    std::mt19937_64 rng(options.seed);
+    for (int s = 0; s < k; ++s) {
+      std::uniform_int_distribution<int> pick(s, n - 1);
+      std::swap(sources[size_t(s)], sources[size_t(pick(rng))]);
+    }
+    sources.resize(size_t(k));
+  }
+  result.sources_used = int(sources.size());
+
+  // Per-row sums of D'^2, G^2 and D'G, added in row order afterwards.
+  std::vector<Eigen::Vector3d> row(sources.size());
+  bool disconnected = false;
+#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
+  for (int s = 0; s < int(sources.size()); ++s) {
+    const int i = sources[size_t(s)];
+    const std::vector<double> g = graph_geodesics(graph, P, i);
+    Eigen::Vector3d sums = Eigen::Vector3d::Zero();
+    for (int j = 0; j < n; ++j) {
+      if (std::isinf(g[size_t(j)])) disconnected = true;
+      const double d = (Q.row(i) - Q.row(j)).norm();
+      sums += Eigen::Vector3d(d * d, g[size_t(j)] * g[size_t(j)], d * g[size_t(j)]);
+    }
+    row[size_t(s)] = sums;
+  }
+  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& sums : row) total += sums;
+  if (total[0] == 0 || total[1] == 0)
+    throw InputError("geodesic_error: all points coincide, distances cannot be normalised");
+  // |a/|a| - b/|b||^2 = 2 - 2 <a, b> / (|a| |b|).
+  const double cosine = total[2] / std::sqrt(total[0] * total[1]);
+  result.value = std::sqrt(std::max(0.0, 2 - 2 * cosine));
+  return result;
+}
+
+}  // namespace unfold

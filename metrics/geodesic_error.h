@@ -1,0 +1,39 @@
+// E_geo (paper Eq. 10): how well Euclidean distances of the deformed shape
+// match geodesic distances of the rest shape, both normalised.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "mesh/edge_graph.h"
+
+namespace unfold {
+
+struct GeodesicErrorOptions {
+  int exact_limit = 3000;  ///< all n sources when n <= this, else `sources` landmarks
+  int sources = 256;       ///< landmark rows of the estimate
+  uint64_t seed = 1;       ///< seed of the landmark choice (fixed: reproducible)
+};
+
+struct GeodesicError {
+  double value = 0;      ///< E_geo (or its estimate)
+  bool exact = false;    ///< true: every vertex was a source
+  int sources_used = 0;  ///< rows of D' and G used
+};
+
+/// E_geo = || D'/||D'||_F - G/||G||_F ||_F with D'_ij = |q_i - q_j| and G_ij the
+/// shortest-path distance from i to j in `graph` with edge lengths from P
+/// (graph_geodesics()). Exact over all rows when n <= exact_limit; otherwise the
+/// same formula over the rows of `sources` distinct vertices drawn uniformly
+/// at random with a fixed seed (a row sample scales both norms alike, so the
+/// normalisation cancels it). Parallel over sources, deterministic. Invariant
+/// to rigid motions and uniform scaling of Q. Accurate to about 1e-8 near 0
+/// (computed as sqrt(2 - 2 <D', G> / (|D'| |G|))).
+/// @param P rest positions (n x 3), n >= 2, graph connected
+/// @param Q deformed positions (n x 3)
+/// @throws UsageError on mismatched sizes, n < 2, exact_limit < 0 or sources < 1
+/// @throws InputError if the graph is disconnected or all points coincide
+GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                             const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options = {});
+
+}  // namespace unfold

@@ -1,0 +1,279 @@
+#include "shapes/articulated_shape.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "mesh/edge_graph.h"
+#include "shapes/implicit_surface_mesh.h"
+
+namespace unfold {
+namespace {
+
+using Eigen::Vector3d;
+
+// Skeleton, parents before children (posing relies on this order). A bone
+// rotates about its joint, a rest-pose point inside the parent near where the
+// bone leaves it.
+enum Bone {
+  kBody,
+  kNeck,
+  kHead,
+  kTail,
+  kTailTip,
+  kFrontLeftUpper,
+  kFrontLeftLower,
+  kFrontRightUpper,
+  kFrontRightLower,
+  kHindLeftUpper,
+  kHindLeftLower,
+  kHindRightUpper,
+  kHindRightLower,
+  kNumBones
+};
+const std::array<int, kNumBones> kParent = {-1,
+                                            kBody,
+                                            kNeck,
+                                            kBody,
+                                            kTail,
+                                            kBody,
+                                            kFrontLeftUpper,
+                                            kBody,
+                                            kFrontRightUpper,
+                                            kBody,
+                                            kHindLeftUpper,
+                                            kBody,
+                                            kHindRightUpper};
+
+constexpr double kLegX = 0.6, kLegY = 0.25, kHipZ = -0.25, kKneeZ = -0.85, kFootZ = -1.4;
+
+Vector3d joint(int bone) {
+  switch (bone) {
+    case kNeck:
+      return {1.0, 0, 0.3};
+    case kHead:
+      return {1.3, 0, 0.75};
+    case kTail:
+      return {-1.1, 0, 0.2};
+    case kTailTip:
+      return {-1.5, 0, 0.4};
+    default:
+      break;
+  }
+  const int leg = (bone - kFrontLeftUpper) / 2;  // 0 FL, 1 FR, 2 HL, 3 HR
+  const bool lower = (bone - kFrontLeftUpper) % 2 == 1;
+  return {leg < 2 ? kLegX : -kLegX, leg % 2 == 0 ? kLegY : -kLegY, lower ? kKneeZ : kHipZ};
+}
+
+// A tapered capsule: radius varies linearly from ra at a to rb at b.
+struct Capsule {
+  int bone;
+  Vector3d a, b;
+  double ra, rb;
+};
+
+std::vector<Capsule> capsules() {
+  std::vector<Capsule> c = {
+      {kBody, {-0.8, 0, 0}, {0.8, 0, 0}, 0.4, 0.4},
+      {kNeck, joint(kNeck), joint(kHead), 0.18, 0.15},
+      {kHead, {1.42, 0, 0.82}, {1.42, 0, 0.82}, 0.24, 0.24},
+      {kHead, {1.42, 0, 0.82}, {1.8, 0, 0.72}, 0.16, 0.11},
+      {kTail, joint(kTail), joint(kTailTip), 0.1, 0.085},
+      {kTailTip, joint(kTailTip), {-1.9, 0, 0.5}, 0.085, 0.07},
+  };
+  for (int upper = kFrontLeftUpper; upper < kNumBones; upper += 2) {
+    const Vector3d foot(joint(upper).x(), joint(upper).y(), kFootZ);
+    c.push_back({upper, joint(upper), joint(upper + 1), 0.14, 0.12});
+    c.push_back({upper + 1, joint(upper + 1), foot, 0.12, 0.1});
+  }
+  return c;
+}
+
+double capsule_distance(const Capsule& c, const Vector3d& x) {
+  const Vector3d ab = c.b - c.a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((x - c.a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - c.a - t * ab).norm() - (c.ra + t * (c.rb - c.ra));
+}
+
+// Polynomial smooth minimum: fillets of width about k where parts meet.
+double smooth_min(double a, double b, double k) {
+  const double h = std::max(k - std::abs(a - b), 0.0) / k;
+  return std::min(a, b) - h * h * k / 4;
+}
+
+struct RestShape {
+  SurfaceMesh mesh;
+  // alpha(i, b): fraction of bone b's joint rotation applied to vertex i.
+  Eigen::MatrixXd alpha;
+};
+
+RestShape build_rest_shape(int resolution) {
+  const std::vector<Capsule> parts = capsules();
+  const ImplicitFunction field = [&parts](const Vector3d& x) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const Capsule& c : parts) d = smooth_min(d, capsule_distance(c, x), 0.06);
+    return d;
+  };
+  Eigen::AlignedBox3d box;
+  for (const Capsule& c : parts) {
+    const Vector3d r = Vector3d::Constant(std::max(c.ra, c.rb));
+    box.extend(Vector3d(c.a - r)).extend(Vector3d(c.a + r));
+    box.extend(Vector3d(c.b - r)).extend(Vector3d(c.b + r));
+  }
+  const double edge = box.sizes().x() / resolution;
+  // The thinnest part (tail tip, radius 0.07) needs a few grid cells across.
+  const double spacing = std::min(edge / 2.5, 0.028);
+  box.min().array() -= 2 * edge;
+  box.max().array() += 2 * edge;
+
+  RestShape rest;
+  rest.mesh = mesh_implicit_surface(field, box, edge, spacing);
+  const int n = int(rest.mesh.V.rows());
+
+  // Skinning weights: each vertex starts fully on the bone of its nearest
+  // part; diffusing these labels over the mesh blends them across joints over
+  // about kBlend, so bent joints stay smooth instead of creasing.
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(n, kNumBones);
+  for (int i = 0; i < n; ++i) {
+    const Vector3d x = rest.mesh.V.row(i).transpose();
+    size_t best = 0;
+    for (size_t k = 1; k < parts.size(); ++k)
+      if (capsule_distance(parts[k], x) < capsule_distance(parts[best], x)) best = k;
+    w(i, parts[best].bone) = 1;
+  }
+  const Eigen::MatrixX3i F = triangulate_faces(rest.mesh);
+  const EdgeGraph graph = build_edge_graph(n, F);
+  constexpr double kBlend = 0.25;
+  const int steps = int(std::lround(std::pow(kBlend / edge, 2)));
+  for (int s = 0; s < steps; ++s) {
+    Eigen::MatrixXd next = w;
+    for (int i = 0; i < n; ++i) {
+      for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+        next.row(i) += w.row(graph.neighbors[size_t(k)]);
+      next.row(i) /= double(graph.degree(i) + 1);
+    }
+    w = next;
+  }
+  // A joint moves everything below it: its fraction is the weight of its subtree.
+  rest.alpha = w;
+  for (int b = kNumBones - 1; b > 0; --b) rest.alpha.col(kParent[size_t(b)]) += rest.alpha.col(b);
+  return rest;
+}
+
+Eigen::Matrix3d rot(double degrees, const Vector3d& axis) {
+  return Eigen::AngleAxisd(degrees * M_PI / 180, axis).toRotationMatrix();
+}
+
+// The rotation of each bone about its joint, relative to its parent.
+std::array<Eigen::AngleAxisd, kNumBones> joint_rotations(const ShapePose& p) {
+  const Vector3d X = Vector3d::UnitX(), Y = Vector3d::UnitY(), Z = Vector3d::UnitZ();
+  std::array<Eigen::Matrix3d, kNumBones> R;
+  R[kBody] = Eigen::Matrix3d::Identity();
+  R[kNeck] = rot(p.neck_yaw, Z) * rot(p.neck_pitch, -Y);
+  R[kHead] = rot(p.head_pitch, -Y);
+  R[kTail] = rot(p.tail_yaw, -Z) * rot(p.tail_pitch, Y);
+  R[kTailTip] = rot(p.tail_tip_yaw, -Z);
+  const std::array<const LegPose*, 4> legs = {&p.front_left, &p.front_right, &p.hind_left,
+                                              &p.hind_right};
+  for (int leg = 0; leg < 4; ++leg) {
+    const Vector3d outward = leg % 2 == 0 ? X : Vector3d(-X);
+    const int upper = kFrontLeftUpper + 2 * leg;
+    R[size_t(upper)] =
+        rot(legs[size_t(leg)]->hip_swing, -Y) * rot(legs[size_t(leg)]->hip_spread, outward);
+    R[size_t(upper) + 1] = rot(legs[size_t(leg)]->knee, Y);
+  }
+  std::array<Eigen::AngleAxisd, kNumBones> result;
+  for (size_t b = 0; b < R.size(); ++b) result[b] = Eigen::AngleAxisd(R[b]);
+  return result;
+}
+
+}  // namespace
+
+ShapePose ShapePose::rest() { return ShapePose(); }
+
+int ShapePose::num_presets() { return 3; }
+
+ShapePose ShapePose::named(const std::string& name) {
+  if (name == "rest") return rest();
+  for (int k = 0; k < num_presets(); ++k)
+    if (name == std::to_string(k)) return preset(k);
+  throw UsageError("unknown pose '" + name + "' (use rest or a preset index 0.." +
+                   std::to_string(num_presets() - 1) + ")");
+}
+
+ShapePose ShapePose::preset(int k) {
+  ShapePose p;
+  switch (k) {
+    case 0:  // walking: left legs forward, right legs back, head down
+      p.neck_pitch = -15, p.neck_yaw = 20, p.head_pitch = -20;
+      p.tail_pitch = 30, p.tail_yaw = 25, p.tail_tip_yaw = 35;
+      p.front_left = {35, 0, 50};
+      p.front_right = {-30, 5, -35};
+      p.hind_left = {30, 5, 45};
+      p.hind_right = {-35, 0, -50};
+      break;
+    case 1:  // crouching: front legs reaching forward, hind legs back, head up
+      p.neck_pitch = 25, p.neck_yaw = -30, p.head_pitch = 25;
+      p.tail_pitch = -20, p.tail_yaw = -40, p.tail_tip_yaw = -45;
+      p.front_left = {45, 10, 65};
+      p.front_right = {40, 15, 60};
+      p.hind_left = {-30, 10, -60};
+      p.hind_right = {-35, 15, -55};
+      break;
+    case 2:  // galloping: legs stretched fore and aft, tail curled up
+      p.neck_pitch = 10, p.neck_yaw = 35, p.head_pitch = -10;
+      p.tail_pitch = 40, p.tail_yaw = -20, p.tail_tip_yaw = 50;
+      p.front_left = {40, 5, 30};
+      p.front_right = {40, 10, 60};
+      p.hind_left = {-40, 10, -30};
+      p.hind_right = {-30, 5, -65};
+      break;
+    default:
+      throw UsageError("ShapePose::preset: k = " + std::to_string(k) + " is not in [0, " +
+                       std::to_string(num_presets()) + ")");
+  }
+  return p;
+}
+
+SurfaceMesh make_articulated_shape(const ShapePose& pose, int resolution) {
+  if (resolution < 16 || resolution > 128)
+    throw UsageError("make_articulated_shape: resolution " + std::to_string(resolution) +
+                     " is not in [16, 128]");
+  // Meshing the rest shape dominates the cost; poses of one resolution share it.
+  static std::mutex mutex;
+  static std::map<int, std::shared_ptr<const RestShape>> cache;
+  std::shared_ptr<const RestShape> cached;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto& slot = cache[resolution];
+    if (!slot) slot = std::make_shared<const RestShape>(build_rest_shape(resolution));
+    cached = slot;
+  }
+  const RestShape& rest = *cached;
+  const std::array<Eigen::AngleAxisd, kNumBones> R = joint_rotations(pose);
+  SurfaceMesh posed = rest.mesh;
+  for (Eigen::Index i = 0; i < posed.V.rows(); ++i) {
+    Vector3d x = posed.V.row(i).transpose();
+    // Children first: a knee turns the lower leg about the rest knee, then the
+    // hip turns the result about the hip (forward kinematics, blended).
+    for (int b = kNumBones - 1; b > 0; --b) {
+      const double a = rest.alpha(i, b);
+      if (a == 0) continue;
+      const Vector3d J = joint(b);
+      x = J + Eigen::AngleAxisd(a * R[size_t(b)].angle(), R[size_t(b)].axis()) * (x - J);
+    }
+    posed.V.row(i) = x.transpose();
+  }
+  return posed;
+}
+
+}  // namespace unfold

@@ -1,0 +1,62 @@
+// A built-in articulated test shape: a four-legged animal (body, neck, head,
+// four two-segment legs, two-segment tail) posed by joint angles, so demos and
+// tests need no downloaded data. All poses of one resolution share the same
+// connectivity and vertex order: vertex i is the same body point in every pose.
+#pragma once
+
+#include <string>
+
+#include "mesh/surface_mesh.h"
+
+namespace unfold {
+
+/// Joint angles of one leg, in degrees.
+struct LegPose {
+  double hip_swing = 0;  ///< about the hip's left-right axis; > 0 moves the foot forward (+x)
+  double hip_spread =
+      0;            ///< about the hip's front-back axis; > 0 moves the foot away from the midline
+  double knee = 0;  ///< about the knee's left-right axis; > 0 moves the foot backward (-x)
+};
+
+/// Joint angles of the animal, in degrees. The animal faces +x, up is +z and
+/// its left side is +y. All zeros is the rest pose: legs straight down, neck
+/// and tail straight.
+struct ShapePose {
+  double neck_pitch = 0;    ///< > 0 raises the neck
+  double neck_yaw = 0;      ///< > 0 turns the neck to the left
+  double head_pitch = 0;    ///< > 0 raises the head
+  double tail_pitch = 0;    ///< > 0 raises the tail
+  double tail_yaw = 0;      ///< > 0 swings the tail to the left
+  double tail_tip_yaw = 0;  ///< > 0 swings the tail's outer half to the left
+  LegPose front_left, front_right, hind_left, hind_right;
+
+  /// The canonical-looking pose: every angle zero.
+  static ShapePose rest();
+  /// Clearly different bent poses (30-70 degrees at hips and knees, bent neck
+  /// and tail), free of self-intersections.
+  /// @param k in [0, num_presets())
+  /// @throws UsageError for k out of range
+  static ShapePose preset(int k);
+  /// Number of presets.
+  static int num_presets();
+  /// "rest" or a preset index ("0", "1", ...), as command lines name poses.
+  /// @throws UsageError for any other name
+  static ShapePose named(const std::string& name);
+};
+
+/// Default `resolution` of make_articulated_shape: about 4000 vertices.
+constexpr int kDefaultShapeResolution = 64;
+
+/// The animal in `pose`: a closed, 2-manifold, single-component, outward
+/// oriented triangle mesh. The rest shape is a smooth union of tapered capsules
+/// meshed once per resolution (and cached: later poses are cheap); poses are obtained by skinning
+/// (each vertex is rotated about the joints of its skeleton chain by a fraction of each joint
+/// angle, fractions blended smoothly across joints), so connectivity and vertex
+/// order never depend on the pose. Self-intersection free for the rest pose and
+/// presets; large angles may make limbs collide. Deterministic.
+/// @param resolution target edge count along the body's length (about
+///                   resolution^2 vertices), in [16, 128]
+/// @throws UsageError for a resolution out of range
+SurfaceMesh make_articulated_shape(const ShapePose& pose, int resolution = kDefaultShapeResolution);
+
+}  // namespace unfold

@@ -1,0 +1,205 @@
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <tetgen.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/errors.h"
+#include "mesh/edge_graph.h"
+#include "shapes/articulated_shape.h"
+
+namespace unfold {
+namespace {
+
+// Rest pose first, then the presets; built once for the whole suite.
+class ShapeTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    shapes_ = new std::vector<SurfaceMesh>;
+    shapes_->push_back(make_articulated_shape(ShapePose::rest()));
+    for (int k = 0; k < ShapePose::num_presets(); ++k)
+      shapes_->push_back(make_articulated_shape(ShapePose::preset(k)));
+  }
+  static void TearDownTestSuite() {
+    delete shapes_;
+    shapes_ = nullptr;
+  }
+  static std::vector<SurfaceMesh>* shapes_;
+};
+std::vector<SurfaceMesh>* ShapeTest::shapes_ = nullptr;
+
+double signed_volume(const SurfaceMesh& m) {
+  const Eigen::MatrixX3i F = triangulate_faces(m);
+  double v = 0;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    v += m.V.row(F(t, 0)).dot(m.V.row(F(t, 1)).cross(m.V.row(F(t, 2)))) / 6;
+  return v;
+}
+
+double min_angle_degrees(const SurfaceMesh& m) {
+  const Eigen::MatrixX3i F = triangulate_faces(m);
+  double worst = 180;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    for (int a = 0; a < 3; ++a) {
+      const Eigen::Vector3d p = m.V.row(F(t, a)), q = m.V.row(F(t, (a + 1) % 3)),
+                            r = m.V.row(F(t, (a + 2) % 3));
+      const double c = (q - p).normalized().dot((r - p).normalized());
+      worst = std::min(worst, std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI);
+    }
+  return worst;
+}
+
+TEST_F(ShapeTest, RestMeshIsClosedOrientedManifoldSphere) {
+  const SurfaceMesh& m = shapes_->front();
+  const Eigen::MatrixX3i F = triangulate_faces(m);
+  ASSERT_EQ(size_t(F.rows()), m.faces.size()) << "all faces are triangles";
+  // Closed and consistently oriented: every directed edge once, its reverse once.
+  std::map<std::pair<int, int>, int> directed;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    for (int a = 0; a < 3; ++a) ++directed[{F(t, a), F(t, (a + 1) % 3)}];
+  for (const auto& [edge, count] : directed) {
+    ASSERT_EQ(count, 1) << "edge " << edge.first << "-" << edge.second;
+    ASSERT_EQ(directed.count({edge.second, edge.first}), 1u)
+        << "boundary edge " << edge.first << "-" << edge.second;
+  }
+  // 2-manifold at vertices too: each vertex's faces form a single fan.
+  const EdgeGraph graph = build_edge_graph(int(m.V.rows()), F);
+  std::vector<int> faces_at(size_t(m.V.rows()), 0);
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    for (int a = 0; a < 3; ++a) ++faces_at[size_t(F(t, a))];
+  for (int i = 0; i < graph.num_vertices; ++i)
+    ASSERT_EQ(faces_at[size_t(i)], graph.degree(i)) << "vertex " << i << " is not a single fan";
+  EXPECT_EQ(connected_components(graph), 1);
+  EXPECT_EQ(m.V.rows() - graph.num_edges() + F.rows(), 2) << "Euler characteristic";
+  EXPECT_GT(signed_volume(m), 0.5) << "outward orientation";
+  EXPECT_GE(m.V.rows(), 3000);
+  EXPECT_LE(m.V.rows(), 5000);
+  EXPECT_GT(min_angle_degrees(m), 10.0);
+}
+
+TEST_F(ShapeTest, PosesShareConnectivityAndKeepVolume) {
+  const SurfaceMesh& rest = shapes_->front();
+  for (const SurfaceMesh& m : *shapes_) {
+    EXPECT_EQ(m.faces, rest.faces);
+    ASSERT_EQ(m.V.rows(), rest.V.rows());
+    EXPECT_NEAR(signed_volume(m), signed_volume(rest), 0.03 * signed_volume(rest));
+    EXPECT_GT(min_angle_degrees(m), 5.0);
+  }
+}
+
+TEST_F(ShapeTest, PresetsDifferClearlyFromRest) {
+  const SurfaceMesh& rest = shapes_->front();
+  for (size_t k = 1; k < shapes_->size(); ++k) {
+    // Most vertices are on the body, which stays put; limbs move a lot.
+    const Eigen::VectorXd moved = ((*shapes_)[k].V - rest.V).rowwise().norm();
+    EXPECT_GT(moved.mean(), 0.1) << "preset " << k - 1;
+    EXPECT_GT(moved.maxCoeff(), 0.5) << "preset " << k - 1;
+  }
+}
+
+TEST_F(ShapeTest, ExtremitiesKeepClearOfEachOther) {
+  // Groups by rest position (vertex i is the same body point in every pose):
+  // the four lower feet, the tail's outer end and the head.
+  const SurfaceMesh& rest = shapes_->front();
+  std::vector<std::vector<int>> groups(6);
+  for (int i = 0; i < int(rest.V.rows()); ++i) {
+    const Eigen::Vector3d p = rest.V.row(i);
+    if (p.z() < -1.0) groups[size_t((p.x() > 0 ? 0 : 2) + (p.y() > 0 ? 0 : 1))].push_back(i);
+    if (p.x() < -1.6) groups[4].push_back(i);
+    if (p.x() > 1.3 && p.z() > 0.45) groups[5].push_back(i);
+  }
+  for (const auto& g : groups) ASSERT_FALSE(g.empty());
+  for (const SurfaceMesh& m : *shapes_)
+    for (size_t a = 0; a < groups.size(); ++a)
+      for (size_t b = a + 1; b < groups.size(); ++b) {
+        double d = INFINITY;
+        for (const int i : groups[a])
+          for (const int j : groups[b]) d = std::min(d, (m.V.row(i) - m.V.row(j)).norm());
+        EXPECT_GT(d, 0.1) << "groups " << a << " and " << b;
+      }
+}
+
+TEST_F(ShapeTest, TetGenAcceptsEveryPoseKeepingSurfaceVertices) {
+  for (size_t k = 0; k < shapes_->size(); ++k) {
+    const SurfaceMesh& m = (*shapes_)[k];
+    const Eigen::MatrixX3i F = triangulate_faces(m);
+    tetgenio in, out;
+    in.numberofpoints = int(m.V.rows());
+    in.pointlist = new REAL[size_t(3 * m.V.rows())];
+    for (Eigen::Index i = 0; i < m.V.rows(); ++i)
+      for (int a = 0; a < 3; ++a) in.pointlist[3 * i + a] = m.V(i, a);
+    in.numberoffacets = int(F.rows());
+    in.facetlist = new tetgenio::facet[size_t(F.rows())];
+    for (Eigen::Index t = 0; t < F.rows(); ++t) {
+      tetgenio::facet& f = in.facetlist[t];
+      tetgenio::init(&f);
+      f.numberofpolygons = 1;
+      f.polygonlist = new tetgenio::polygon[1];
+      tetgenio::init(&f.polygonlist[0]);
+      f.polygonlist[0].numberofvertices = 3;
+      f.polygonlist[0].vertexlist = new int[3]{F(t, 0), F(t, 1), F(t, 2)};
+    }
+    char switches[] = "pYQ";
+    bool failed = false;
+    try {
+      tetrahedralize(switches, &in, &out);
+    } catch (int code) {
+      failed = true;
+      ADD_FAILURE() << "TetGen failed with code " << code << " on shape " << k;
+    }
+    if (failed) continue;
+    ASSERT_GE(out.numberofpoints, in.numberofpoints);
+    EXPECT_GT(out.numberoftetrahedra, 0);
+    for (int i = 0; i < 3 * in.numberofpoints; ++i)
+      ASSERT_EQ(out.pointlist[i], in.pointlist[i]) << "shape " << k << " moved a surface point";
+  }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+int run_app(const std::string& args) {
+  const int status =
+      std::system((std::string(UNFOLD_BIN_DIR) + "/unfold_shape " + args + " 2>/dev/null").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(ShapeApp, WritesTheSameOffInSeparateRuns) {
+  // Separate processes rebuild the shape from scratch: checks determinism.
+  const std::string dir = ::testing::TempDir();
+  ASSERT_EQ(run_app("--pose 1 --resolution 24 --output " + dir + "shape_a.off"), 0);
+  ASSERT_EQ(run_app("--pose 1 --resolution 24 --output " + dir + "shape_b.off"), 0);
+  const std::string a = read_file(dir + "shape_a.off");
+  EXPECT_EQ(a.rfind("OFF\n", 0), 0u);
+  EXPECT_EQ(a, read_file(dir + "shape_b.off"));
+}
+
+TEST(ShapeApp, BadFlagsExitWithTwo) {
+  const std::string out = " --output " + ::testing::TempDir() + "shape_bad.off";
+  EXPECT_EQ(run_app("--pose 7" + out), 2);
+  EXPECT_EQ(run_app("--pose rest --resolution 5" + out), 2);
+  EXPECT_EQ(run_app("--pose rest"), 2);
+  EXPECT_EQ(run_app("--resolution abc" + out), 2);
+  EXPECT_EQ(run_app("--no_such_flag" + out), 2);
+}
+
+TEST(ShapeMake, RejectsBadParameters) {
+  EXPECT_THROW(make_articulated_shape(ShapePose::rest(), 15), UsageError);
+  EXPECT_THROW(make_articulated_shape(ShapePose::rest(), 129), UsageError);
+  EXPECT_THROW(ShapePose::preset(-1), UsageError);
+  EXPECT_THROW(ShapePose::preset(ShapePose::num_presets()), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
