@@ -8,6 +8,7 @@
 #include "apps/app_main.h"
 #include "config/config_keys.h"
 #include "config/options.h"
+#include "core/atomic_file.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
@@ -49,6 +50,9 @@ int run() {
   for (const std::string& path : {FLAGS_output, FLAGS_input_copy})
     if (!path.empty()) unfold::check_surface_mesh_format(path);
   unfold::check_tet_mesh_format(FLAGS_tet_output);
+  for (const std::string& path :
+       {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_metrics_json})
+    if (!path.empty()) unfold::check_writable_destination(path);
 
   unfold::SurfaceMesh surface;
   if (FLAGS_input.empty()) {

@@ -34,6 +34,15 @@ std::string create_temp_file(const std::string& path) {
 
 }  // namespace
 
+void check_writable_destination(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "."
+                          : slash == 0               ? "/"
+                                                     : path.substr(0, slash);
+  if (access(dir.c_str(), W_OK | X_OK) != 0)
+    throw OutputError("cannot write '" + path + "': directory '" + dir + "': " + system_reason());
+}
+
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary) {
   const std::string temp = create_temp_file(path);

@@ -20,4 +20,9 @@ namespace unfold {
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 
+/// Checks early, before long work, that `path` could be created: its directory
+/// exists and is writable.
+/// @throws OutputError naming `path` and the reason
+void check_writable_destination(const std::string& path);
+
 }  // namespace unfold

@@ -45,9 +45,9 @@ TEST(Config, EffectiveYamlRoundTrips) {
 
 TEST(Config, OverridesWinOverTheFile) {
   const std::string path = write_temp("k.yaml", "cascade:\n  k_iter: 9\n");
-  const Options o = load_options(path, {{"cascade.k_iter", "20"},
-                                        {"cascade.edge_ratio_band", "0.9,1.2"},
-                                        {"beta.value", "2.5"}});
+  const Options o = load_options(
+      path,
+      {{"cascade.k_iter", "20"}, {"cascade.edge_ratio_band", "0.9,1.2"}, {"beta.value", "2.5"}});
   EXPECT_EQ(o.cascade.k_iter, 20);
   EXPECT_EQ(o.cascade.edge_ratio_band[0], 0.9);
   EXPECT_EQ(o.cascade.edge_ratio_band[1], 1.2);

@@ -1,0 +1,73 @@
+// End to end through the library: real TOSCA meshes (skipped without the
+// shared data) and pose invariance on the generated shape.
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "mesh/read_surface_mesh.h"
+#include "metrics/rigid_alignment.h"
+#include "pipeline/unfold_surface.h"
+#include "shapes/articulated_shape.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+double rms_radius(const Eigen::MatrixX3d& V) {
+  return std::sqrt((V.rowwise() - V.colwise().mean()).rowwise().squaredNorm().mean());
+}
+
+class PipelineWolf : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PipelineWolf, UnfoldsWithThePapersQuality) {
+  const std::string path = test::shared_data(std::string("tosca/") + GetParam() + ".off");
+  if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/" << GetParam() << ".off";
+  const SurfaceMesh input = read_surface_mesh(path);
+  const UnfoldResult r = unfold_surface(input, Options{});
+  ASSERT_EQ(r.canonical.V.rows(), 4344);
+  EXPECT_EQ(r.canonical.faces, input.faces);
+  EXPECT_TRUE(r.canonical.V.allFinite());
+  EXPECT_TRUE(r.cascade.reached_band);
+  EXPECT_GE(r.cascade.edge_ratio, 0.95);
+  EXPECT_LE(r.cascade.edge_ratio, 1.05);
+  EXPECT_LT(r.metrics.E_rig, 0.7);
+  EXPECT_GT(r.metrics.E_str, 0.05);
+  // Limbs stretched out: the shape spreads away from its centroid.
+  EXPECT_GT(rms_radius(r.canonical.V), 1.05 * rms_radius(input.V));
+}
+
+INSTANTIATE_TEST_SUITE_P(Tosca, PipelineWolf, ::testing::Values("wolf0", "wolf1", "wolf2"));
+
+TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
+  const SurfaceMesh a = make_articulated_shape(ShapePose::preset(0));
+  const SurfaceMesh b = make_articulated_shape(ShapePose::preset(1));
+  const UnfoldResult ua = unfold_surface(a, Options{});
+  const UnfoldResult ub = unfold_surface(b, Options{});
+  const double before = aligned_distance(a.V, b.V);
+  const double after = aligned_distance(ua.canonical.V, ub.canonical.V);
+  EXPECT_LT(after, 0.5 * before) << "poses " << before << " apart, canonical forms " << after;
+}
+
+TEST(PipelineInput, RefusesAnOpenSurface) {
+  SurfaceMesh open = test::octahedron();
+  open.faces.pop_back();
+  try {
+    unfold_surface(open, Options{});
+    FAIL() << "an open surface was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("open"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PipelineInput, BetaBelowTheBoundIsReported) {
+  // Half of n / lambda_2: below the bound, the first cascade runs unbounded.
+  Options options;
+  options.beta_value = 0.5;
+  options.cascade.num_cascades = 1;
+  options.cascade.k_iter = 2;
+  const UnfoldResult r = unfold_surface(make_articulated_shape(ShapePose::rest(), 32), options);
+  EXPECT_FALSE(r.cascade.bounded);
+  EXPECT_FALSE(r.warnings.empty());
+}
+
+}  // namespace
+}  // namespace unfold
