@@ -18,6 +18,7 @@
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
+#include "solvers/unfold_problem.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -27,6 +28,7 @@ struct BenchMesh {
   std::string name;
   TetMesh tets;
   EdgeGraph graph;
+  UnfoldProblem problem;
   double beta = 0;
 };
 
@@ -46,7 +48,10 @@ const BenchMesh& bench_mesh() {
     }
     m.tets = tetrahedralize(surface, TetOptions{});
     m.graph = build_edge_graph(int(m.tets.V.rows()), m.tets.T);
-    m.beta = 1.5 * m.graph.num_vertices / fiedler_value(graph_laplacian(m.graph));
+    m.problem.graph = &m.graph;
+    m.problem.rest = m.tets.V;
+    m.problem.terms = make_energy_terms(m.tets, m.graph, EnergyOptions{});
+    m.beta = 1.5 * m.graph.num_vertices / fiedler_value(beta_laplacian(m.problem));
     std::fprintf(stderr, "bench mesh: %s, %d tet vertices, %d edges\n", m.name.c_str(),
                  m.graph.num_vertices, m.graph.num_edges());
     return m;
@@ -60,7 +65,7 @@ struct SolverState {
   Eigen::MatrixX3d Q;
   Rotations R;
   explicit SolverState(const BenchMesh& m) {
-    local_global_precomputation(m.graph, m.tets.V, &data);
+    local_global_precomputation(m.problem, &data);
     local_global_set_beta(m.beta, &data);
     Q = m.tets.V;
     for (int k = 0; k < 3; ++k) {
@@ -74,8 +79,8 @@ void BM_SymbolicAnalysis(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
   for (auto _ : state) {
     LocalGlobalData data;
-    local_global_precomputation(m.graph, m.tets.V, &data);
-    benchmark::DoNotOptimize(data.L.nonZeros());
+    local_global_precomputation(m.problem, &data);
+    benchmark::DoNotOptimize(data.A_beta.nonZeros());
   }
 }
 BENCHMARK(BM_SymbolicAnalysis)->Unit(benchmark::kMillisecond);
@@ -83,7 +88,7 @@ BENCHMARK(BM_SymbolicAnalysis)->Unit(benchmark::kMillisecond);
 void BM_NumericFactorization(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
   LocalGlobalData data;
-  local_global_precomputation(m.graph, m.tets.V, &data);
+  local_global_precomputation(m.problem, &data);
   for (auto _ : state) local_global_set_beta(m.beta, &data);
 }
 BENCHMARK(BM_NumericFactorization)->Unit(benchmark::kMillisecond);
@@ -117,7 +122,10 @@ void BM_Cascade(benchmark::State& state) {
   CascadeOptions options;
   options.beta = m.beta;
   int iterations = 0;
-  for (auto _ : state) iterations = run_cascade(m.graph, m.tets.V, options).iterations;
+  for (auto _ : state) {
+    LocalGlobalBackend backend(m.problem);
+    iterations = run_cascade(m.problem, backend, options, options.k_iter).iterations;
+  }
   state.counters["iterations"] = iterations;
 }
 BENCHMARK(BM_Cascade)->Unit(benchmark::kMillisecond);

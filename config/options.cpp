@@ -156,7 +156,8 @@ Options load_options(const std::string& config_path,
 }
 
 void validate_options(const Options& o) {
-  require(o.method == "local_global", "method", "must be local_global, got '" + o.method + "'");
+  require(o.method == "local_global" || o.method == "ceres", "method",
+          "must be local_global or ceres, got '" + o.method + "'");
   require(o.target_vertices == 0 || o.target_vertices >= 4, "simplify.target_vertices",
           "must be 0 (keep all) or at least 4");
   require(o.tet.route == "conforming", "tetrahedralize.route",
@@ -182,6 +183,20 @@ void validate_options(const Options& o) {
   require(o.geodesic_metric.exact_limit >= 0, "metrics.geodesic_exact_limit", "must be >= 0");
   require(o.geodesic_metric.sources >= 1, "metrics.geodesic_landmarks", "must be at least 1");
   require(o.threads >= 0, "threads", "must be >= 0");
+  const EnergyOptions& e = o.energy;
+  require(std::isfinite(e.stretch_weight) && e.stretch_weight > 0, "stretch.weight",
+          "must be a positive finite number");
+  require(std::isfinite(e.arap_weight) && e.arap_weight > 0, "arap.weight",
+          "must be a positive finite number");
+  require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
+          "must be uniform or cotangent, got '" + e.arap_weights + "'");
+  require(std::isfinite(e.user_pairs_gamma) && e.user_pairs_gamma > 0, "user_pairs.gamma",
+          "must be a positive finite number");
+  require(std::isfinite(e.volume_weight) && e.volume_weight >= 0, "volume.weight",
+          "must be a finite number >= 0");
+  require(e.volume_weight == 0 || o.method == "ceres", "volume.weight",
+          "needs method: ceres (the volume term is not quadratic)");
+  validate_ceres_options(o.ceres);
 }
 
 std::string options_to_yaml(const Options& options) {

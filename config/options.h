@@ -5,9 +5,11 @@
 #include <map>
 #include <string>
 
+#include "energies/energy_terms.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
+#include "solvers/ceres_backend.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -19,6 +21,8 @@ struct Options {
   std::string beta_mode = "relative";
   double beta_value = 1.5;
   CascadeOptions cascade;  ///< cascade.beta is derived from beta_mode / beta_value
+  EnergyOptions energy;
+  CeresOptions ceres;
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;
   int threads = 0;

@@ -1,27 +1,70 @@
 #include "energies/arap_energy.h"
 
 #include "energies/jet_evaluation.h"
+#include "energies/row_major.h"
 
 namespace unfold {
 
-double arap_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
-                   const Rotations& R, Eigen::MatrixX3d* grad) {
-  const int n = graph.num_vertices;
-  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> q = Q;
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> g;
-  if (grad) g.setZero(n, 3);
-  auto grad_row = [&](int i) { return grad ? g.row(i).data() : nullptr; };
+ArapEnergy::ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
+                       std::vector<double> edge_weights, double weight)
+    : EnergyTerm(weight, true), graph_(graph), rest_(rest), weights_(std::move(edge_weights)) {}
 
+double ArapEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
+                            Eigen::MatrixX3d* grad) const {
+  const int n = graph_.num_vertices;
+  const RowMatrixX3d q = Q;
+  RowMatrixX3d g;
+  if (grad) g.setZero(n, 3);
+  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
   double energy = 0;
   for (int i = 0; i < n; ++i)
-    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
-      const int j = graph.neighbors[size_t(k)];
-      const ArapEdgeResidual residual(R[size_t(i)] * (P.row(i) - P.row(j)).transpose());
-      energy +=
-          squared_norm_2(residual, q.row(i).data(), q.row(j).data(), 1.0, grad_row(i), grad_row(j));
+    for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k) {
+      const int j = graph_.neighbors[size_t(k)];
+      const double w = weights_[size_t(graph_.neighbor_edge[size_t(k)])];
+      const ArapEdgeResidual residual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose(), w);
+      const std::array<double*, 2> gij = {at(i), at(j)};
+      energy += squared_norm<3, 2>(residual, {q.row(i).data(), q.row(j).data()}, scale,
+                                   grad ? &gij : nullptr);
     }
-  if (grad) *grad = g;
+  if (grad) *grad += g;
   return energy;
+}
+
+void ArapEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const {
+  for (int e = 0; e < graph_.num_edges(); ++e) {
+    const int i = graph_.edges(e, 0), j = graph_.edges(e, 1);
+    const double w = 2.0 * scale * weights_[size_t(e)];
+    H->emplace_back(i, i, w);
+    H->emplace_back(j, j, w);
+    H->emplace_back(i, j, -w);
+    H->emplace_back(j, i, -w);
+  }
+}
+
+void ArapEnergy::add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const {
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < graph_.num_vertices; ++i) {
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k) {
+      const int j = graph_.neighbors[size_t(k)];
+      const double w = weights_[size_t(graph_.neighbor_edge[size_t(k)])];
+      b.noalias() +=
+          w * ((R[size_t(i)] + R[size_t(j)]) * (rest_.row(i) - rest_.row(j)).transpose());
+    }
+    B->row(i) += scale * b.transpose();
+  }
+}
+
+void ArapEnergy::add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
+                                         std::vector<Eigen::Matrix3d>* S) const {
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < graph_.num_vertices; ++i)
+    for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k) {
+      const int j = graph_.neighbors[size_t(k)];
+      const double w = scale * weights_[size_t(graph_.neighbor_edge[size_t(k)])];
+      (*S)[size_t(i)].noalias() +=
+          w * (rest_.row(i) - rest_.row(j)).transpose() * (Q.row(i) - Q.row(j));
+    }
 }
 
 }  // namespace unfold

@@ -1,14 +1,16 @@
-// The as-rigid-as-possible term of the paper (Eq. 2 summed over cells, w_ij = 1):
-//   E_r(Q; R) = sum_i sum_{j in N_i} |q_i - q_j - R_i (p_i - p_j)|^2,
+// The as-rigid-as-possible term of the paper (Eq. 2 summed over cells):
+//   e_r(Q; R) = sum_i sum_{j in N_i} w_ij |q_i - q_j - R_i (p_i - p_j)|^2,
 // each undirected edge appearing once in cell i and once in cell j.
+// Quadratic: H = 2 L_w, B_i = sum_j w_ij (R_i + R_j)(p_i - p_j) (docs/method.md).
 #pragma once
 
 #include <ceres/autodiff_cost_function.h>
 
 #include <Eigen/Core>
+#include <vector>
 
+#include "energies/energy_term.h"
 #include "mesh/edge_graph.h"
-#include "solvers/best_rotations.h"
 
 namespace unfold {
 
@@ -30,12 +32,29 @@ struct ArapEdgeResidual {
   double sqrt_weight;
 };
 
-/// E_r(Q; R) in O(m).
-/// @param P    rest positions (n x 3)
-/// @param Q    current positions (n x 3)
-/// @param R    one rotation per vertex (n)
-/// @param grad if not null, receives dE_r/dQ at fixed R (resized to n x 3)
-double arap_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
-                   const Rotations& R, Eigen::MatrixX3d* grad = nullptr);
+/// The ARAP term (weight relative to beta: the cascade's beta multiplies it).
+class ArapEnergy : public EnergyTerm {
+ public:
+  /// @param graph        edge graph; kept by reference, must outlive the term
+  /// @param rest         rest positions P (n x 3)
+  /// @param edge_weights w_ij per graph edge (all 1 for the paper's uniform weights), > 0
+  ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest, std::vector<double> edge_weights,
+             double weight);
+  std::string name() const override { return "arap"; }
+  double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
+                  Eigen::MatrixX3d* grad) const override;
+  bool quadratic() const override { return true; }
+  void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
+  void add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const override;
+  bool uses_rotations() const override { return true; }
+  void add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
+                               std::vector<Eigen::Matrix3d>* S) const override;
+  const std::vector<double>& edge_weights() const { return weights_; }
+
+ private:
+  const EdgeGraph& graph_;
+  Eigen::MatrixX3d rest_;
+  std::vector<double> weights_;
+};
 
 }  // namespace unfold

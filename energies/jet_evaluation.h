@@ -1,58 +1,48 @@
-// Evaluates a Ceres residual functor on one or two 3-vectors with forward-mode
-// automatic differentiation (ceres::Jet), returning |r|^2 and its gradient.
-// This lets energy terms be written once, as Ceres functors, and be summed
-// over a mesh without building a ceres::Problem.
+// Evaluates a Ceres residual functor on K blocks of 3 doubles with
+// forward-mode automatic differentiation (ceres::Jet), returning |r|^2 and its
+// gradient. Energy terms are written once, as Ceres functors, and summed over a
+// mesh without building a ceres::Problem.
 #pragma once
 
 #include <ceres/jet.h>
 
+#include <array>
+#include <utility>
+
 namespace unfold {
 
-/// |f(a)|^2 for a functor with one 3-vector block and 3 residuals; adds
-/// scale * d|f|^2/da into grad_a when it is not null.
-template <typename Functor>
-double squared_norm_1(const Functor& f, const double* a, double scale, double* grad_a) {
-  if (!grad_a) {
-    double r[3];
-    f(a, r);
-    return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-  }
-  using Jet = ceres::Jet<double, 3>;
-  Jet x[3], r[3];
-  for (int k = 0; k < 3; ++k) x[k] = Jet(a[k], k);
-  f(x, r);
-  double value = 0;
-  for (int k = 0; k < 3; ++k) {
-    value += r[k].a * r[k].a;
-    for (int d = 0; d < 3; ++d) grad_a[d] += scale * 2 * r[k].a * r[k].v[d];
-  }
-  return value;
+namespace internal {
+template <typename Functor, typename T, size_t... I>
+void call_functor(const Functor& f, const std::array<const T*, sizeof...(I)>& x, T* r,
+                  std::index_sequence<I...>) {
+  f(x[I]..., r);
 }
+}  // namespace internal
 
-/// |f(a, b)|^2 for a functor with two 3-vector blocks and 3 residuals; adds
-/// scale * gradients into grad_a and grad_b when they are not null.
-template <typename Functor>
-double squared_norm_2(const Functor& f, const double* a, const double* b, double scale,
-                      double* grad_a, double* grad_b) {
-  if (!grad_a) {
-    double r[3];
-    f(a, b, r);
-    return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
-  }
-  using Jet = ceres::Jet<double, 6>;
-  Jet x[3], y[3], r[3];
-  for (int k = 0; k < 3; ++k) {
-    x[k] = Jet(a[k], k);
-    y[k] = Jet(b[k], 3 + k);
-  }
-  f(x, y, r);
+/// |f(x_0, ..., x_{K-1})|^2 for a functor with K 3-vector blocks and R residuals.
+/// When grad is not null, adds scale * d|f|^2/dx_k into grad[k] (3 doubles each).
+template <int R, int K, typename Functor>
+double squared_norm(const Functor& f, const std::array<const double*, K>& x, double scale,
+                    const std::array<double*, K>* grad) {
   double value = 0;
-  for (int k = 0; k < 3; ++k) {
+  if (!grad) {
+    double r[R];
+    internal::call_functor(f, x, r, std::make_index_sequence<K>());
+    for (int k = 0; k < R; ++k) value += r[k] * r[k];
+    return value;
+  }
+  using Jet = ceres::Jet<double, 3 * K>;
+  Jet storage[K][3], r[R];
+  std::array<const Jet*, K> jx;
+  for (int b = 0; b < K; ++b) {
+    for (int d = 0; d < 3; ++d) storage[b][d] = Jet(x[size_t(b)][d], 3 * b + d);
+    jx[size_t(b)] = storage[b];
+  }
+  internal::call_functor(f, jx, r, std::make_index_sequence<K>());
+  for (int k = 0; k < R; ++k) {
     value += r[k].a * r[k].a;
-    for (int d = 0; d < 3; ++d) {
-      grad_a[d] += scale * 2 * r[k].a * r[k].v[d];
-      grad_b[d] += scale * 2 * r[k].a * r[k].v[3 + d];
-    }
+    for (int b = 0; b < K; ++b)
+      for (int d = 0; d < 3; ++d) (*grad)[size_t(b)][d] += scale * 2 * r[k].a * r[k].v[3 * b + d];
   }
   return value;
 }

@@ -1,14 +1,16 @@
 // The stretch term of the paper's Eq. 3 with k_ij = 1:
-//   E_s(Q) = - sum_i sum_{j not in N_i} |q_i - q_j|^2   (ordered pairs).
+//   e_s(Q) = - sum_i sum_{j not in N_i} |q_i - q_j|^2   (ordered pairs).
 // Over all ordered pairs sum |q_i - q_j|^2 = 2n sum_i |q_i - c|^2 (c the
-// centroid), so E_s = -2n sum_i |q_i - c|^2 + 2 sum_{edges} |q_i - q_j|^2,
-// an O(n + m) sum of squared Ceres residuals with signs -1 and +1.
+// centroid), so e_s = -2n sum_i |q_i - c|^2 + 2 sum_{edges} |q_i - q_j|^2: an
+// O(n + m) sum of squared Ceres residuals with signs -1 and +1, never O(n^2).
+// Quadratic: H = 2 L - 2n I (+ 2 1 1^T, which vanishes on zero-mean Q), B = 0.
 #pragma once
 
 #include <ceres/autodiff_cost_function.h>
 
 #include <Eigen/Core>
 
+#include "energies/energy_term.h"
 #include "mesh/edge_graph.h"
 
 namespace unfold {
@@ -44,10 +46,19 @@ struct StretchEdgeResidual {
   }
 };
 
-/// E_s(Q) in O(n + m).
-/// @param Q    positions (n x 3), n = graph.num_vertices
-/// @param grad if not null, receives dE_s/dQ (resized to n x 3)
-double stretch_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& Q,
-                      Eigen::MatrixX3d* grad = nullptr);
+/// The stretch term (weight k, not scaled by beta).
+class StretchEnergy : public EnergyTerm {
+ public:
+  /// @param graph edge graph of the tet mesh; kept by reference, must outlive the term
+  StretchEnergy(const EdgeGraph& graph, double weight) : EnergyTerm(weight, false), graph_(graph) {}
+  std::string name() const override { return "stretch"; }
+  double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
+                  Eigen::MatrixX3d* grad) const override;
+  bool quadratic() const override { return true; }
+  void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
+
+ private:
+  const EdgeGraph& graph_;
+};
 
 }  // namespace unfold

@@ -47,6 +47,8 @@ void write_metrics_json(const std::string& path, const UnfoldResult& r, const Op
         << "  \"E_geo\": " << number(m.E_geo) << ",\n"
         << "  \"E_geo_exact\": " << boolean(m.E_geo_exact) << ",\n"
         << "  \"edge_ratio\": " << number(c.edge_ratio) << ",\n"
+        << "  \"inverted_tets\": " << m.inverted_tets << ",\n"
+        << "  \"final_energy\": " << number(c.final_energy) << ",\n"
         << "  \"reached_band\": " << boolean(c.reached_band) << ",\n"
         << "  \"bounded\": " << boolean(c.bounded) << ",\n"
         << "  \"iterations\": " << c.iterations << ",\n"

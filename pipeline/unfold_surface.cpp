@@ -8,10 +8,13 @@
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
 #include "mesh/simplify_surface_mesh.h"
+#include "mesh/tet_volumes.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
+#include "solvers/ceres_backend.h"
 #include "solvers/fiedler_value.h"
+#include "solvers/local_global.h"
 
 namespace unfold {
 namespace {
@@ -34,52 +37,75 @@ void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {
 
 }  // namespace
 
-UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
+PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
   validate_options(options);
-  UnfoldResult result;
+  PreparedMesh prepared;
   const SurfaceReport report = check_surface_mesh(input);
   // A tet mesh needs a closed surface: holes are fatal, the rest is tolerated.
   if (report.num_boundary_edges > 0)
     throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
                      " boundary edges); unfold needs a closed surface");
-  result.warnings = report.warnings;
+  prepared.warnings = report.warnings;
   for (const auto& w : report.warnings) LOG(WARNING) << w;
 
   if (options.target_vertices > 0 && options.target_vertices < input.V.rows()) {
-    result.surface = simplify_surface_mesh(input, options.target_vertices);
-    LOG(INFO) << "simplified " << input.V.rows() << " -> " << result.surface.V.rows()
+    prepared.surface = simplify_surface_mesh(input, options.target_vertices);
+    LOG(INFO) << "simplified " << input.V.rows() << " -> " << prepared.surface.V.rows()
               << " vertices";
-    check_surface_mesh(result.surface);
+    check_surface_mesh(prepared.surface);
   } else {
-    result.surface = input;
+    prepared.surface = input;
   }
 
-  result.tets = tetrahedralize(result.surface, options.tet, &result.tet_report);
-  LOG(INFO) << "tetrahedralized (" << result.tet_report.route << "): " << result.tets.V.rows()
-            << " vertices, " << result.tets.T.rows() << " tets in " << result.tet_report.seconds
+  prepared.tets = tetrahedralize(prepared.surface, options.tet, &prepared.tet_report);
+  LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
+            << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
             << " s";
+  return prepared;
+}
+
+UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options) {
+  validate_options(options);
+  UnfoldResult result;
+  result.surface = prepared.surface;
+  result.tets = prepared.tets;
+  result.tet_report = prepared.tet_report;
+  result.warnings = prepared.warnings;
 
   const auto start = std::chrono::steady_clock::now();
   const EdgeGraph graph = build_edge_graph(int(result.tets.V.rows()), result.tets.T);
   check_tet_graph(graph, result.tets.V);
   result.num_edges = graph.num_edges();
+  UnfoldProblem problem;
+  problem.graph = &graph;
+  problem.rest = result.tets.V;
+  problem.terms = make_energy_terms(result.tets, graph, options.energy);
   const int n = graph.num_vertices;
-  result.lambda2 = fiedler_value(graph_laplacian(graph));
+  result.lambda2 = fiedler_value(beta_laplacian(problem));
   const double bound = n / result.lambda2;
   result.beta_start =
       options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
   LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << result.lambda2
-            << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start;
+            << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start
+            << ", method " << options.method;
   CascadeOptions cascade = options.cascade;
   cascade.beta = result.beta_start;
-  result.cascade = run_cascade(graph, result.tets.V, cascade);
+  std::unique_ptr<CascadeBackend> backend;
+  int iterations_per_cascade = options.cascade.k_iter;
+  if (options.method == "ceres") {
+    backend = std::make_unique<CeresBackend>(problem, options.ceres);
+    iterations_per_cascade = options.ceres.max_num_iterations;
+  } else {
+    backend = std::make_unique<LocalGlobalBackend>(problem);
+  }
+  result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
                               " did not reach the band within " +
                               std::to_string(options.cascade.num_cascades) + " cascades");
   if (!result.cascade.bounded)
-    result.warnings.push_back("beta was below the bound n/lambda_2 - 1 in some cascade");
+    result.warnings.push_back("beta was below the boundedness bound in some cascade");
 
   // Back where the input was: the solve fixes only shape, not translation.
   result.tet_canonical = result.cascade.positions;
@@ -98,8 +124,13 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
   m.E_geo = geo.value;
   m.E_geo_exact = geo.exact;
+  m.inverted_tets = count_inverted_tets(P, Q, result.tets.T);
   m.seconds = seconds_since(metrics_start);
   return result;
+}
+
+UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
+  return unfold_prepared(prepare_mesh(input, options), options);
 }
 
 }  // namespace unfold

@@ -19,7 +19,17 @@ struct UnfoldMetrics {
   bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
   double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
+  int inverted_tets = 0;    ///< tetrahedra whose orientation flipped
   double seconds = 0;
+};
+
+/// A surface checked, simplified if asked, and tetrahedralized: what every
+/// solver run on it shares.
+struct PreparedMesh {
+  SurfaceMesh surface;  ///< the surface unfolded (the input, or its simplification)
+  TetMesh tets;
+  TetReport tet_report;
+  std::vector<std::string> warnings;
 };
 
 struct UnfoldResult {
@@ -37,7 +47,17 @@ struct UnfoldResult {
   std::vector<std::string> warnings;
 };
 
-/// Unfolds a surface into its canonical pose.
+/// Checks, simplifies (options.target_vertices) and tetrahedralizes a surface.
+/// @throws InputError for a surface that fails the checks, NumericalError when
+///         tetrahedralization fails, UsageError for bad options
+PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options);
+
+/// Unfolds a prepared mesh with the options' energy terms, backend and cascade.
+/// @throws NumericalError when the solve fails, InputError for a bad pairs file,
+///         UsageError for bad options
+UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options);
+
+/// Unfolds a surface into its canonical pose: prepare_mesh, then unfold_prepared.
 /// @param surface  the input surface, as read (it is checked here)
 /// @param options  validated options (load_options)
 /// @throws InputError for a surface that fails the checks, NumericalError when

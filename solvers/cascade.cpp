@@ -2,78 +2,44 @@
 
 #include <glog/logging.h>
 
-#include <cmath>
-
-#include "core/errors.h"
-#include "energies/unfold_energy.h"
 #include "metrics/edge_ratio.h"
-#include "solvers/local_global.h"
+#include "solvers/unfold_problem.h"
 
 namespace unfold {
-namespace {
 
-void factorize(double beta, LocalGlobalData* data, CascadeResult* result) {
-  local_global_set_beta(beta, data);
-  if (!energy_bounded(*data)) {
-    result->bounded = false;
-    LOG(WARNING) << "beta = " << beta << " is below the bound n/lambda_2 - 1: the energy is "
-                 << "unbounded and the solve will overstretch (" << data->negative_pivots
-                 << " negative directions)";
-  }
-}
-
-}  // namespace
-
-CascadeResult run_cascade(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
-                          const CascadeOptions& options) {
-  const Eigen::MatrixX3d& P = rest;
+CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
+                          const CascadeOptions& options, int iterations_per_cascade) {
   CascadeResult result;
-  LocalGlobalData data;
-  local_global_precomputation(graph, P, &data);
+  Eigen::MatrixX3d Q = problem.rest;
+  const Rotations identity(size_t(problem.num_vertices()), Eigen::Matrix3d::Identity());
   double beta = options.beta;
-  factorize(beta, &data, &result);
-
-  Eigen::MatrixX3d Q = P;
-  Rotations R(size_t(graph.num_vertices), Eigen::Matrix3d::Identity());
-  double f_s = unfold_energy(graph, P, Q, R, beta);
-  int i = 1, j = 1;
-  int total = 0;
-  while (true) {
-    best_rotations(graph, P, Q, &R);
-    global_step(data, R, &Q);
-    ++total;
-    if (!Q.allFinite())
-      throw NumericalError("non-finite positions at iteration " + std::to_string(total) +
-                           " (beta = " + std::to_string(beta) + ")");
-    const double delta = edge_ratio(graph, P, Q);
-    const double f_e = unfold_energy(graph, P, Q, R, beta);
-    result.history.push_back({total, j, beta, f_e, delta});
-    VLOG(1) << "iteration " << total << " cascade " << j << " beta " << beta << " energy " << f_e
-            << " edge ratio " << delta;
-    if (delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1]) {
-      result.reached_band = true;
-      break;
+  double energy = total_energy(problem, Q, identity, beta);  // f_s of Algorithm 1
+  const StageOptions stage{iterations_per_cascade, options.epsilon, options.edge_ratio_band};
+  for (int cascade = 1; cascade <= options.num_cascades; ++cascade) {
+    if (cascade > 1) beta *= options.growth;
+    backend.set_beta(beta);
+    if (!backend.bounded()) {
+      result.bounded = false;
+      LOG(WARNING) << "beta = " << beta << " is below the boundedness bound: the energy is "
+                   << "unbounded and the solve will overstretch";
     }
-    if (std::abs(f_e / f_s - 1.0) < options.epsilon || i >= options.k_iter) {
-      LOG(INFO) << "cascade " << j << ": beta " << beta << ", " << i << " iterations, energy "
-                << f_e << ", edge ratio " << delta;
-      ++j;
-      if (j > options.num_cascades) break;
-      beta *= options.growth;
-      factorize(beta, &data, &result);
-      i = 0;
-    }
-    ++i;
-    f_s = f_e;
+    const size_t before = result.history.size();
+    result.reached_band = backend.run_stage(stage, cascade, &Q, &energy, &result.history);
+    result.cascades = cascade;
+    if (result.history.size() > before)
+      LOG(INFO) << "cascade " << cascade << ": beta " << beta << ", "
+                << result.history.size() - before << " iterations, energy "
+                << result.history.back().energy << ", edge ratio "
+                << result.history.back().edge_ratio << (result.reached_band ? " in band" : "");
+    if (result.reached_band) break;
   }
-  if (result.reached_band)
-    LOG(INFO) << "cascade " << j << ": beta " << beta << ", " << i << " iterations, edge ratio "
-              << result.history.back().edge_ratio << " in band";
-  result.positions = Q;
-  result.iterations = total;
-  result.cascades = std::min(j, options.num_cascades);
   result.final_beta = beta;
-  result.edge_ratio = result.history.back().edge_ratio;
+  result.iterations = int(result.history.size());
+  Rotations R;
+  fit_rotations(problem, Q, beta, &R);
+  result.final_energy = total_energy(problem, Q, R, beta);
+  result.edge_ratio = edge_ratio(*problem.graph, problem.rest, Q);
+  result.positions = std::move(Q);
   return result;
 }
 

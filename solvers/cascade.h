@@ -1,22 +1,23 @@
-// Algorithm 1 of the paper: local-global iterations in cascades of growing
-// beta, stopped when the mean edge-length ratio enters a band around 1.
+// Algorithm 1 of the paper: iterations in cascades of growing beta, stopped
+// when the mean edge-length ratio enters a band around 1. The driver is shared
+// by the solver backends (local-global, Ceres); each runs the iterations of
+// one cascade at a fixed beta.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
 #include <vector>
 
-#include "mesh/edge_graph.h"
-#include "solvers/best_rotations.h"
-
 namespace unfold {
 
+struct UnfoldProblem;
+
 struct CascadeOptions {
-  double beta = 0;         ///< starting beta (absolute), > 0
-  int k_iter = 15;         ///< iterations per cascade at most
-  double epsilon = 1e-4;   ///< a cascade ends when |f_e / f_s - 1| < epsilon
-  int num_cascades = 4;    ///< cascades at most ("num")
-  double growth = 2.0;     ///< beta factor between cascades
+  double beta = 0;        ///< starting beta (absolute), > 0
+  int k_iter = 15;        ///< iterations per cascade at most (local-global)
+  double epsilon = 1e-4;  ///< a cascade ends when |f_e / f_s - 1| < epsilon (local-global)
+  int num_cascades = 4;   ///< cascades at most ("num")
+  double growth = 2.0;    ///< beta factor between cascades
   std::array<double, 2> edge_ratio_band = {0.95, 1.05};  ///< stop once the edge ratio is inside
 };
 
@@ -24,8 +25,31 @@ struct IterationRecord {
   int iteration;  ///< 1-based over the whole run
   int cascade;    ///< 1-based
   double beta;
-  double energy;      ///< Eq. 3 after the global step, at that iteration's rotations
-  double edge_ratio;  ///< delta after the global step
+  double energy;      ///< the energy after the iteration, at that iteration's rotations
+  double edge_ratio;  ///< delta after the iteration
+};
+
+/// What one cascade (stage) of a backend is told.
+struct StageOptions {
+  int max_iterations;
+  double epsilon;
+  std::array<double, 2> edge_ratio_band;
+};
+
+/// A solver backend, as the cascade driver sees it.
+class CascadeBackend {
+ public:
+  virtual ~CascadeBackend() = default;
+  /// Prepares iterations at a new beta (e.g. a numeric factorization).
+  virtual void set_beta(double beta) = 0;
+  /// False if the energy is unbounded below at the current beta.
+  virtual bool bounded() const = 0;
+  /// Iterates at the current beta from *Q until the edge ratio is in the band
+  /// (returns true), the energy converges or max_iterations pass (false).
+  /// @param previous_energy in: f_s; out: the last energy (Algorithm 1's f_e)
+  /// @param history         one record appended per iteration
+  virtual bool run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,
+                         double* previous_energy, std::vector<IterationRecord>* history) = 0;
 };
 
 struct CascadeResult {
@@ -33,17 +57,17 @@ struct CascadeResult {
   int iterations = 0;
   int cascades = 0;  ///< number of beta values used
   double final_beta = 0;
+  double final_energy = 0;  ///< at the final positions and their best rotations
   double edge_ratio = 0;
   bool reached_band = false;  ///< false: stopped by the cascade limit instead
-  bool bounded = true;        ///< false if some beta was below the n / lambda_2 bound
+  bool bounded = true;        ///< false if some beta was below the boundedness bound
   std::vector<IterationRecord> history;
 };
 
-/// Runs Algorithm 1 from Q = P.
-/// @param graph edge graph of the tet mesh (connected)
-/// @param rest  rest positions P (n x 3)
-/// @throws NumericalError if a factorization fails or a non-finite position appears
-CascadeResult run_cascade(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
-                          const CascadeOptions& options);
+/// Runs Algorithm 1 from Q = P with the given backend.
+/// @param iterations_per_cascade the backend's iteration limit per cascade
+/// @throws NumericalError if the backend fails or a non-finite position appears
+CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
+                          const CascadeOptions& options, int iterations_per_cascade);
 
 }  // namespace unfold

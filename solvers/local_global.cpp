@@ -1,22 +1,59 @@
 #include "solvers/local_global.h"
 
+#include <glog/logging.h>
+
+#include <cmath>
+
 #include "core/errors.h"
+#include "metrics/edge_ratio.h"
 
 namespace unfold {
+namespace {
 
-void local_global_precomputation(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
-                                 LocalGlobalData* data) {
-  data->graph = &graph;
-  data->rest = rest;
-  data->L = graph_laplacian(graph);
-  data->ldlt.analyzePattern(data->L);
+// Sum of weight * H over the quadratic terms with scales_with_beta == scaled,
+// on the union pattern of all terms (explicit zeros kept, so A_fixed and
+// A_beta share one pattern and A = A_fixed + beta A_beta keeps it).
+Eigen::SparseMatrix<double> assemble(const UnfoldProblem& problem, bool scaled) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const auto& term : problem.terms) {
+    std::vector<Eigen::Triplet<double>> t;
+    term->add_hessian(term->weight(1.0), &t);
+    for (const auto& x : t)
+      triplets.emplace_back(x.row(), x.col(), term->scales_with_beta() == scaled ? x.value() : 0);
+  }
+  Eigen::SparseMatrix<double> A(problem.num_vertices(), problem.num_vertices());
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  return A;
+}
+
+void assemble_quadratic_part(const UnfoldProblem& problem, LocalGlobalData* data) {
+  data->problem = &problem;
+  data->A_fixed = assemble(problem, false);
+  data->A_beta = assemble(problem, true);
+  data->ldlt.analyzePattern(data->A_fixed + data->A_beta);
   data->beta = 0;
 }
 
+}  // namespace
+
+void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data) {
+  for (const auto& term : problem.terms)
+    if (!term->quadratic())
+      throw UsageError("the " + term->name() +
+                       " term is not quadratic: the local_global method cannot minimise it "
+                       "(use method: ceres)");
+  assemble_quadratic_part(problem, data);
+}
+
+bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
+  LocalGlobalData data;
+  assemble_quadratic_part(problem, &data);
+  local_global_set_beta(beta, &data);
+  return energy_bounded(data);
+}
+
 void local_global_set_beta(double beta, LocalGlobalData* data) {
-  Eigen::SparseMatrix<double> A = (beta + 1.0) * data->L;
-  A.diagonal().array() -= double(data->graph->num_vertices);
-  data->ldlt.factorize(A);
+  data->ldlt.factorize(data->A_fixed + beta * data->A_beta);
   if (data->ldlt.info() != Eigen::Success)
     throw NumericalError("factorizing the global matrix failed at beta = " + std::to_string(beta));
   data->beta = beta;
@@ -24,22 +61,39 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
 }
 
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q) {
-  const EdgeGraph& g = *data.graph;
-  const Eigen::MatrixX3d& P = data.rest;
-  Eigen::MatrixX3d rhs(g.num_vertices, 3);
-  const double half_beta = 0.5 * data.beta;
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < g.num_vertices; ++i) {
-    Eigen::Vector3d b = Eigen::Vector3d::Zero();
-    for (int k = g.offsets[size_t(i)]; k < g.offsets[size_t(i) + 1]; ++k) {
-      const int j = g.neighbors[size_t(k)];
-      b.noalias() += (R[size_t(i)] + R[size_t(j)]) * (P.row(i) - P.row(j)).transpose();
-    }
-    rhs.row(i) = half_beta * b.transpose();
-  }
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(data.problem->num_vertices(), 3);
+  for (const auto& term : data.problem->terms) term->add_linear(R, term->weight(data.beta), &rhs);
   *Q = data.ldlt.solve(rhs);
-  // Roundoff leaves a tiny constant component; the energy ignores translation.
+  // Every B_t sums to zero, so Q has zero mean up to roundoff; remove that too.
   Q->rowwise() -= Q->colwise().mean();
+}
+
+LocalGlobalBackend::LocalGlobalBackend(const UnfoldProblem& problem) {
+  local_global_precomputation(problem, &data_);
+}
+
+void LocalGlobalBackend::set_beta(double beta) { local_global_set_beta(beta, &data_); }
+
+bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,
+                                   double* previous_energy, std::vector<IterationRecord>* history) {
+  const UnfoldProblem& problem = *data_.problem;
+  for (int i = 1;; ++i) {
+    fit_rotations(problem, *Q, data_.beta, &R_);
+    global_step(data_, R_, Q);
+    const int iteration = int(history->size()) + 1;
+    if (!Q->allFinite())
+      throw NumericalError("non-finite positions at iteration " + std::to_string(iteration) +
+                           " (beta = " + std::to_string(data_.beta) + ")");
+    const double delta = edge_ratio(*problem.graph, problem.rest, *Q);
+    const double energy = total_energy(problem, *Q, R_, data_.beta);
+    history->push_back({iteration, cascade, data_.beta, energy, delta});
+    VLOG(1) << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
+            << " energy " << energy << " edge ratio " << delta;
+    if (delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1]) return true;
+    const bool converged = std::abs(energy / *previous_energy - 1.0) < options.epsilon;
+    *previous_energy = energy;
+    if (converged || i >= options.max_iterations) return false;
+  }
 }
 
 }  // namespace unfold

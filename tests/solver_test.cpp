@@ -4,12 +4,12 @@
 
 #include <Eigen/Dense>
 
-#include "energies/unfold_energy.h"
 #include "solvers/best_rotations.h"
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
 #include "test_meshes.h"
+#include "test_problem.h"
 
 namespace unfold {
 namespace {
@@ -46,30 +46,27 @@ TEST(SolverFiedler, MatchesDenseEigenvalues) {
   EXPECT_NEAR(fiedler_value(L), dense.eigenvalues()(1), 1e-9);
 }
 
-struct Fixture {
-  TetMesh mesh = test::grid_tet_mesh(6, 2, 2, 0.5);
-  EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
-  int n = int(mesh.V.rows());
-  double lambda2 = fiedler_value(graph_laplacian(graph));
+struct Fixture : test::ProblemFixture {
+  Fixture() : ProblemFixture(test::grid_tet_mesh(6, 2, 2, 0.5)) {}
 };
 
 TEST(SolverGlobalStep, ZeroesTheEnergyGradientAtFixedRotations) {
   Fixture f;
   const double beta = 1.5 * f.n / f.lambda2;
   LocalGlobalData data;
-  local_global_precomputation(f.graph, f.mesh.V, &data);
+  local_global_precomputation(f.problem, &data);
   local_global_set_beta(beta, &data);
   // Rotations from a bent pose, so that the global step has work to do.
   Eigen::MatrixX3d bent = f.mesh.V;
   for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.3 * bent(i, 0) * bent(i, 0);
   Rotations R;
-  best_rotations(f.graph, f.mesh.V, bent, &R);
+  best_rotations(*f.graph, f.mesh.V, bent, &R);
   Eigen::MatrixX3d Q;
   global_step(data, R, &Q);
   Eigen::MatrixX3d grad;
-  unfold_energy(f.graph, f.mesh.V, Q, R, beta, &grad);
+  total_energy(f.problem, Q, R, beta, &grad);
   Eigen::MatrixX3d grad_at_bent;
-  unfold_energy(f.graph, f.mesh.V, bent, R, beta, &grad_at_bent);
+  total_energy(f.problem, bent, R, beta, &grad_at_bent);
   EXPECT_LT(grad.norm(), 1e-9 * grad_at_bent.norm());
   EXPECT_LT(Q.colwise().mean().norm(), 1e-12);
 }
@@ -78,16 +75,16 @@ TEST(SolverGlobalStep, GlobalStepIsTheMinimiserAlongRandomDirections) {
   Fixture f;
   const double beta = 2.0 * f.n / f.lambda2;
   LocalGlobalData data;
-  local_global_precomputation(f.graph, f.mesh.V, &data);
+  local_global_precomputation(f.problem, &data);
   local_global_set_beta(beta, &data);
   Rotations R(size_t(f.n), test::random_rotation(3));
   Eigen::MatrixX3d Q;
   global_step(data, R, &Q);
-  const double e0 = unfold_energy(f.graph, f.mesh.V, Q, R, beta);
+  const double e0 = total_energy(f.problem, Q, R, beta);
   std::srand(11);
   for (int trial = 0; trial < 5; ++trial) {
     const Eigen::MatrixX3d D = 1e-2 * Eigen::MatrixX3d::Random(f.n, 3);
-    EXPECT_GT(unfold_energy(f.graph, f.mesh.V, Q + D, R, beta), e0);
+    EXPECT_GT(total_energy(f.problem, Q + D, R, beta), e0);
   }
 }
 
@@ -95,7 +92,7 @@ TEST(SolverBetaBound, QuadraticPartIndefiniteBelowTheBound) {
   Fixture f;
   const double threshold = f.n / f.lambda2 - 1.0;  // (beta + 1) lambda_2 = n
   LocalGlobalData data;
-  local_global_precomputation(f.graph, f.mesh.V, &data);
+  local_global_precomputation(f.problem, &data);
   local_global_set_beta(1.01 * threshold, &data);
   EXPECT_TRUE(energy_bounded(data));
   EXPECT_EQ(data.negative_pivots, 1);
@@ -103,13 +100,13 @@ TEST(SolverBetaBound, QuadraticPartIndefiniteBelowTheBound) {
   EXPECT_FALSE(energy_bounded(data));
 
   // Below the bound the Fiedler direction lowers the energy without limit.
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(data.L)};
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(graph_laplacian(*f.graph))};
   const Eigen::VectorXd fiedler = dense.eigenvectors().col(1);
   Eigen::MatrixX3d D = Eigen::MatrixX3d::Zero(f.n, 3);
   D.col(0) = fiedler;
   const Rotations R(size_t(f.n), Eigen::Matrix3d::Identity());
   auto energy_along = [&](double beta, double t) {
-    return unfold_energy(f.graph, f.mesh.V, f.mesh.V + t * D, R, beta);
+    return total_energy(f.problem, f.mesh.V + t * D, R, beta);
   };
   const double below = 0.99 * threshold, above = 1.01 * threshold;
   EXPECT_LT(energy_along(below, 1e4), energy_along(below, 1e3));
@@ -121,7 +118,8 @@ TEST(SolverCascade, EnergyNeverIncreasesWithinACascade) {
   CascadeOptions options;
   options.beta = 1.5 * f.n / f.lambda2;
   options.edge_ratio_band = {-1, -1};  // run every cascade to its end
-  const CascadeResult result = run_cascade(f.graph, f.mesh.V, options);
+  LocalGlobalBackend backend(f.problem);
+  const CascadeResult result = run_cascade(f.problem, backend, options, options.k_iter);
   ASSERT_GT(result.iterations, 4);
   for (size_t k = 1; k < result.history.size(); ++k) {
     if (result.history[k].cascade != result.history[k - 1].cascade) continue;
@@ -136,7 +134,8 @@ TEST(SolverCascade, RigidInputStaysRigidAndSpreads) {
   Fixture f;
   CascadeOptions options;
   options.beta = 1.5 * f.n / f.lambda2;
-  const CascadeResult result = run_cascade(f.graph, f.mesh.V, options);
+  LocalGlobalBackend backend(f.problem);
+  const CascadeResult result = run_cascade(f.problem, backend, options, options.k_iter);
   EXPECT_TRUE(result.bounded);
   EXPECT_GT(result.edge_ratio, 0.95);
   EXPECT_LT(result.edge_ratio, 1.3);

@@ -1,0 +1,35 @@
+#include "energies/energy_terms.h"
+
+#include "core/errors.h"
+#include "energies/arap_energy.h"
+#include "energies/cotangent_weights.h"
+#include "energies/read_user_pairs.h"
+#include "energies/stretch_energy.h"
+#include "energies/user_pairs_energy.h"
+#include "energies/volume_energy.h"
+
+namespace unfold {
+
+EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
+                              const EnergyOptions& options) {
+  EnergyTerms terms;
+  terms.push_back(std::make_unique<StretchEnergy>(graph, options.stretch_weight));
+  std::vector<double> weights;
+  if (options.arap_weights == "uniform")
+    weights.assign(size_t(graph.num_edges()), 1.0);
+  else if (options.arap_weights == "cotangent")
+    weights = cotangent_weights(tets.V, tets.T, graph);
+  else
+    throw UsageError("config key 'arap.weights' must be uniform or cotangent, got '" +
+                     options.arap_weights + "'");
+  terms.push_back(std::make_unique<ArapEnergy>(graph, tets.V, weights, options.arap_weight));
+  if (!options.user_pairs_file.empty())
+    terms.push_back(std::make_unique<UserPairsEnergy>(
+        read_user_pairs(options.user_pairs_file, tets.num_surface_vertices),
+        options.user_pairs_gamma));
+  if (options.volume_weight > 0)
+    terms.push_back(std::make_unique<VolumeEnergy>(tets.V, tets.T, options.volume_weight));
+  return terms;
+}
+
+}  // namespace unfold

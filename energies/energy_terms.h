@@ -1,0 +1,31 @@
+// The set of energy terms a run minimises, built from the config.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "energies/energy_term.h"
+#include "mesh/edge_graph.h"
+#include "mesh/tet_mesh.h"
+
+namespace unfold {
+
+struct EnergyOptions {
+  double stretch_weight = 1.0;           ///< k_ij (paper: 1)
+  double arap_weight = 1.0;              ///< ARAP weight relative to beta (paper: 1)
+  std::string arap_weights = "uniform";  ///< w_ij: uniform (paper) or cotangent
+  std::string user_pairs_file;           ///< pair constraints (Eq. 11); empty: none
+  double user_pairs_gamma = 1.0;         ///< gamma relative to beta (paper: gamma = beta)
+  double volume_weight = 0.0;            ///< tet volume term relative to beta; 0: off
+};
+
+using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
+
+/// The terms enabled by `options` on a tet mesh: stretch, ARAP, and user pairs
+/// and volume when configured. The terms keep a reference to `graph`.
+/// @throws UsageError for an unknown arap_weights, InputError for a bad pairs file
+EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
+                              const EnergyOptions& options);
+
+}  // namespace unfold

@@ -1,0 +1,55 @@
+// Optional volume preservation (DPMU-style): each tetrahedron's signed volume
+// should keep its rest value,
+//   e_v(Q) = sum_t l_t^2 (V_t(Q) / V_t(P) - 1)^2,
+// with l_t^2 the tet's mean squared rest edge length, so the term has the units
+// of the ARAP term and its weight is relative to beta like ARAP's. An inverted
+// tetrahedron costs at least l_t^2. Not quadratic: only the Ceres backend
+// minimises it.
+#pragma once
+
+#include <ceres/autodiff_cost_function.h>
+
+#include <Eigen/Core>
+
+#include "energies/energy_term.h"
+
+namespace unfold {
+
+/// l (V(a, b, c, d) / V0 - 1) with V the signed volume.
+struct VolumeResidual {
+  VolumeResidual(double rest_volume, double edge_scale) : v0(rest_volume), l(edge_scale) {}
+  template <typename T>
+  bool operator()(const T* a, const T* b, const T* c, const T* d, T* r) const {
+    T u[3], v[3], w[3];
+    for (int k = 0; k < 3; ++k) {
+      u[k] = b[k] - a[k];
+      v[k] = c[k] - a[k];
+      w[k] = d[k] - a[k];
+    }
+    const T volume = (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                      u[2] * (v[0] * w[1] - v[1] * w[0])) /
+                     T(6.0);
+    r[0] = T(l) * (volume / T(v0) - T(1.0));
+    return true;
+  }
+  static ceres::CostFunction* Create(double rest_volume, double edge_scale) {
+    return new ceres::AutoDiffCostFunction<VolumeResidual, 1, 3, 3, 3, 3>(
+        new VolumeResidual(rest_volume, edge_scale));
+  }
+  double v0, l;
+};
+
+class VolumeEnergy : public EnergyTerm {
+ public:
+  /// @param rest rest positions; T tetrahedra with non-zero rest volume
+  VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i& T, double weight);
+  std::string name() const override { return "volume"; }
+  double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
+                  Eigen::MatrixX3d* grad) const override;
+
+ private:
+  Eigen::MatrixX4i T_;
+  Eigen::VectorXd rest_volume_, edge_scale_;
+};
+
+}  // namespace unfold

@@ -1,0 +1,43 @@
+#include "solvers/unfold_problem.h"
+
+namespace unfold {
+
+double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, const Rotations& R,
+                    double beta, Eigen::MatrixX3d* grad) {
+  if (grad) grad->setZero(problem.num_vertices(), 3);
+  double energy = 0;
+  for (const auto& term : problem.terms) {
+    const double w = term->weight(beta);
+    energy += w * term->evaluate(Q, R, w, grad);
+  }
+  return energy;
+}
+
+void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, double beta,
+                   Rotations* R) {
+  const int n = problem.num_vertices();
+  std::vector<Eigen::Matrix3d> S(size_t(n), Eigen::Matrix3d::Zero());
+  bool any = false;
+  for (const auto& term : problem.terms)
+    if (term->uses_rotations()) {
+      term->add_rotation_covariance(Q, term->weight(beta), &S);
+      any = true;
+    }
+  R->resize(size_t(n));
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i)
+    (*R)[size_t(i)] =
+        any && !S[size_t(i)].isZero(0) ? best_rotation(S[size_t(i)]) : Eigen::Matrix3d::Identity();
+}
+
+Eigen::SparseMatrix<double> beta_laplacian(const UnfoldProblem& problem) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const auto& term : problem.terms)
+    if (term->quadratic() && term->scales_with_beta())
+      term->add_hessian(0.5 * term->weight(1.0), &triplets);
+  Eigen::SparseMatrix<double> L(problem.num_vertices(), problem.num_vertices());
+  L.setFromTriplets(triplets.begin(), triplets.end());
+  return L;
+}
+
+}  // namespace unfold

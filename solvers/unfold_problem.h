@@ -1,0 +1,37 @@
+// The problem every solver minimises: the tet mesh's edge graph, the rest
+// positions and the energy terms. Solvers see terms only through this.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "energies/energy_terms.h"
+#include "mesh/edge_graph.h"
+#include "solvers/best_rotations.h"
+
+namespace unfold {
+
+struct UnfoldProblem {
+  const EdgeGraph* graph = nullptr;
+  Eigen::MatrixX3d rest;
+  EnergyTerms terms;
+  int num_vertices() const { return graph->num_vertices; }
+};
+
+/// E(Q; R) = sum_t w_t(beta) e_t(Q; R); with grad, its gradient at fixed R
+/// (grad is resized to n x 3). At the optimal R (fit_rotations) this is also
+/// the gradient of min_R E(Q; R), by the envelope theorem.
+double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, const Rotations& R,
+                    double beta, Eigen::MatrixX3d* grad = nullptr);
+
+/// The local step: per vertex, the rotation minimising the rotation-dependent
+/// terms at beta (their weighted cell covariances summed), in parallel over vertices.
+void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, double beta,
+                   Rotations* R);
+
+/// Half the summed Hessians of the quadratic terms that scale with beta, at
+/// beta = 1: the Laplacian whose lambda_2 sets the scale of beta (for the
+/// paper's energy, the graph Laplacian L; docs/method.md).
+Eigen::SparseMatrix<double> beta_laplacian(const UnfoldProblem& problem);
+
+}  // namespace unfold
