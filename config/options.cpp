@@ -141,6 +141,11 @@ Options load_options(const std::string& config_path,
         apply(path, value, " in '" + config_path + "'");
       });
     }
+    // A file named in a config is relative to the config's folder.
+    std::string& pairs = options.energy.user_pairs_file;
+    const size_t slash = config_path.find_last_of('/');
+    if (!pairs.empty() && pairs[0] != '/' && slash != std::string::npos)
+      pairs = config_path.substr(0, slash + 1) + pairs;
   }
   for (const auto& [path, text] : overrides) {
     YAML::Node value;

@@ -49,6 +49,13 @@ class EnergyTerm {
   virtual void add_linear(const Rotations& /*R*/, double /*scale*/, Eigen::MatrixX3d* /*B*/) const {
   }
 
+  /// Adds scale * an n x n positive semi-definite approximation of the term's
+  /// Hessian (acting alike on x, y, z), used to precondition iterative solvers.
+  /// Quadratic terms add H; others override.
+  virtual void add_preconditioner(double scale, std::vector<Eigen::Triplet<double>>* H) const {
+    add_hessian(scale, H);
+  }
+
   /// True if e_t depends on the per-vertex rotations R.
   virtual bool uses_rotations() const { return false; }
   /// Adds scale * this term's cell covariances sum_j w_ij (p_i - p_j)(q_i - q_j)^T,

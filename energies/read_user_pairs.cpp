@@ -58,6 +58,7 @@ std::vector<UserPair> read_csv(const std::string& path, int num_vertices) {
   std::ifstream in(path);
   std::vector<UserPair> pairs;
   std::string line;
+  bool seen_content = false;
   for (int number = 1; std::getline(in, line); ++number) {
     line = line.substr(0, line.find('#'));
     for (char& c : line)
@@ -74,7 +75,12 @@ std::vector<UserPair> read_csv(const std::string& path, int num_vertices) {
       if (count < 5) v[count] = x;
       ++count;
     }
-    if (count == 0 || (!numeric && pairs.empty() && number == 1)) continue;  // blank or header
+    if (count == 0) continue;
+    if (!numeric && !seen_content) {  // a header before the first pair
+      seen_content = true;
+      continue;
+    }
+    seen_content = true;
     const std::string where = "user pairs '" + path + "' line " + std::to_string(number);
     if (!numeric || count != 5) throw InputError(where + ": expected i, j, tx, ty, tz");
     pairs.push_back(make_pair(v, num_vertices, where));

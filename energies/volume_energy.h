@@ -46,8 +46,12 @@ class VolumeEnergy : public EnergyTerm {
   std::string name() const override { return "volume"; }
   double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
                   Eigen::MatrixX3d* grad) const override;
+  /// The Gauss-Newton Hessian at the rest shape, 2 sum_t (l_t / V0_t)^2 g_t g_t^T
+  /// (g_t = dV_t/dQ), averaged over the three coordinates.
+  void add_preconditioner(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
 
  private:
+  Eigen::MatrixX3d rest_;
   Eigen::MatrixX4i T_;
   Eigen::VectorXd rest_volume_, edge_scale_;
 };

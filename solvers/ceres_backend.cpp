@@ -100,7 +100,11 @@ CeresBackend::CeresBackend(const UnfoldProblem& problem, const CeresOptions& opt
 void CeresBackend::set_beta(double beta) {
   beta_ = beta;
   bounded_ = quadratic_part_bounded(problem_, beta);
-  Eigen::SparseMatrix<double> M = beta * beta_laplacian(problem_);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const auto& term : problem_.terms)
+    if (term->scales_with_beta()) term->add_preconditioner(term->weight(beta), &triplets);
+  Eigen::SparseMatrix<double> M(problem_.num_vertices(), problem_.num_vertices());
+  M.setFromTriplets(triplets.begin(), triplets.end());
   const double shift = 1e-8 * M.diagonal().cwiseAbs().maxCoeff();
   for (int i = 0; i < M.rows(); ++i) M.coeffRef(i, i) += shift;
   preconditioner_.compute(M);

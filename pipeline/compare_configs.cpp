@@ -1,0 +1,84 @@
+#include "pipeline/compare_configs.h"
+
+#include <glog/logging.h>
+
+#include <cstdio>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "config/options.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "pipeline/unfold_surface.h"
+
+namespace unfold {
+namespace {
+
+std::string stem(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const size_t dot = name.find_last_of('.');
+  return dot == std::string::npos ? name : name.substr(0, dot);
+}
+
+}  // namespace
+
+std::map<std::string, std::string> fixed_beta_overrides(double relative_beta) {
+  std::ostringstream beta;
+  beta << std::setprecision(17) << relative_beta;
+  // One cascade, no band, iterations until the energy stops changing.
+  return {{"beta.mode", "relative"},
+          {"beta.value", beta.str()},
+          {"cascade.num", "1"},
+          {"cascade.k_iter", "20000"},
+          {"cascade.epsilon", "1e-9"},
+          {"cascade.edge_ratio_band", "[0, 0]"},
+          {"ceres.max_num_iterations", "20000"},
+          {"ceres.function_tolerance", "1e-13"}};
+}
+
+std::vector<ComparisonRow> compare_configs(const SurfaceMesh& surface,
+                                           const std::vector<std::string>& config_paths,
+                                           std::optional<double> fixed_beta) {
+  if (config_paths.empty()) throw UsageError("no configs to compare");
+  const auto overrides =
+      fixed_beta ? fixed_beta_overrides(*fixed_beta) : std::map<std::string, std::string>{};
+  std::vector<Options> options;
+  for (const auto& path : config_paths) options.push_back(load_options(path, overrides));
+  const PreparedMesh prepared = prepare_mesh(surface, options.front());
+  std::vector<ComparisonRow> rows;
+  for (size_t k = 0; k < options.size(); ++k) {
+    LOG(INFO) << "config " << config_paths[k];
+    const UnfoldResult r = unfold_prepared(prepared, options[k]);
+    rows.push_back({stem(config_paths[k]), r.cascade.final_energy, r.metrics.E_rig, r.metrics.E_str,
+                    r.metrics.E_geo, r.cascade.iterations, r.seconds_unfold});
+  }
+  return rows;
+}
+
+std::string format_comparison(const std::vector<ComparisonRow>& rows) {
+  std::ostringstream out;
+  char line[256];
+  std::snprintf(line, sizeof line, "%-20s %16s %8s %8s %8s %10s %9s\n", "config", "final_energy",
+                "E_rig", "E_str", "E_geo", "iterations", "seconds");
+  out << line;
+  for (const auto& r : rows) {
+    std::snprintf(line, sizeof line, "%-20s %16.9g %8.4f %8.4f %8.4f %10d %9.3f\n",
+                  r.config.c_str(), r.final_energy, r.E_rig, r.E_str, r.E_geo, r.iterations,
+                  r.seconds);
+    out << line;
+  }
+  return out.str();
+}
+
+void write_comparison_csv(const std::string& path, const std::vector<ComparisonRow>& rows) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << std::setprecision(12) << "config,final_energy,E_rig,E_str,E_geo,iterations,seconds\n";
+    for (const auto& r : rows)
+      out << r.config << ',' << r.final_energy << ',' << r.E_rig << ',' << r.E_str << ',' << r.E_geo
+          << ',' << r.iterations << ',' << r.seconds << '\n';
+  });
+}
+
+}  // namespace unfold
