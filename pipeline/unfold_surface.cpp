@@ -58,7 +58,13 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   LOG(INFO) << "tetrahedralized (" << result.tet_report.route << "): " << result.tets.V.rows()
             << " vertices, " << result.tets.T.rows() << " tets in " << result.tet_report.seconds
             << " s";
+  unfold_tet_mesh(options, &result);
+  return result;
+}
 
+void unfold_tet_mesh(const Options& options, UnfoldResult* out) {
+  validate_options(options);
+  UnfoldResult& result = *out;
   const auto start = std::chrono::steady_clock::now();
   const EdgeGraph graph = build_edge_graph(int(result.tets.V.rows()), result.tets.T);
   check_tet_graph(graph, result.tets.V);
@@ -91,7 +97,9 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   const Eigen::MatrixX3d& P = result.tets.V;
   const Eigen::MatrixX3d& Q = result.tet_canonical;
   UnfoldMetrics& m = result.metrics;
-  m.E_rig = rigidity_error(graph, P, Q).mean;
+  const RigidityError rig = rigidity_error(graph, P, Q);
+  m.E_rig = rig.mean;
+  m.rigidity_per_vertex = rig.per_vertex;
   const StretchError str = stretch_error(P, Q, options.stretch_metric);
   m.E_str = str.value;
   m.E_str_exact = str.exact;
@@ -99,7 +107,6 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   m.E_geo = geo.value;
   m.E_geo_exact = geo.exact;
   m.seconds = seconds_since(metrics_start);
-  return result;
 }
 
 }  // namespace unfold

@@ -20,6 +20,7 @@ struct UnfoldMetrics {
   double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
   double seconds = 0;
+  Eigen::VectorXd rigidity_per_vertex;  ///< E_rig's term of each tet vertex (RigidityError)
 };
 
 struct UnfoldResult {
@@ -43,5 +44,14 @@ struct UnfoldResult {
 /// @throws InputError for a surface that fails the checks, NumericalError when
 ///         tetrahedralization or the solve fails, UsageError for bad options
 UnfoldResult unfold_surface(const SurfaceMesh& surface, const Options& options);
+
+/// The solve part of unfold_surface on an already tetrahedralized surface:
+/// lambda_2, the cascade and the metrics, so several runs (a beta sweep) can
+/// share one tet mesh.
+/// @param result  in: surface, tets (and tet_report, warnings) as unfold_surface
+///                fills them; out: every other field recomputed (warnings appended)
+/// @throws NumericalError if the tet graph is unusable or the solve fails,
+///         UsageError for bad options
+void unfold_tet_mesh(const Options& options, UnfoldResult* result);
 
 }  // namespace unfold
