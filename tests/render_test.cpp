@@ -212,7 +212,9 @@ TEST(RenderCli, DemoBeforeAfterAndConvergence) {
 TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {
   test::TempDir dir;
   const std::string picture = dir.file("sweep.png");
-  ASSERT_EQ(run_unfold("--demo_pose 2 --beta_sweep 1,4 --render " + picture), 0);
+  ASSERT_EQ(
+      run_unfold("--demo_pose 2 --k_iter 5 --num_cascades 2 --beta_sweep 1,4 --render " + picture),
+      0);
   const Png png = read_png(picture);
   EXPECT_EQ(png.width, 3 * RenderOptions().panel_width);
   EXPECT_EQ(run_unfold("--beta_sweep 1,x --render " + picture), 2);
