@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include "core/errors.h"
 #include "render/camera.h"
@@ -15,13 +16,21 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
   if (panels.empty()) throw UsageError("render_comparison: no panels");
   if (options.panel_width < 16 || options.panel_height < 16 || options.supersample < 1)
     throw UsageError("render_comparison: panels need at least 16 x 16 pixels, supersample >= 1");
-  double value_max = 0;
+  std::vector<double> values;
   for (const RenderPanel& p : panels) {
     if (p.values.size() != 0 && p.values.size() != p.V.rows())
       throw UsageError("render_comparison: panel '" + p.title + "' has " +
                        std::to_string(p.values.size()) + " values for " +
                        std::to_string(p.V.rows()) + " vertices");
-    if (p.values.size() != 0) value_max = std::max(value_max, p.values.maxCoeff());
+    values.insert(values.end(), p.values.data(), p.values.data() + p.values.size());
+  }
+  // The colour scale ends at the 98th percentile: a few extreme vertices would
+  // otherwise push every other one into the darkest colours.
+  double value_max = 0;
+  if (!values.empty()) {
+    auto at = values.begin() + std::ptrdiff_t(0.98 * double(values.size() - 1));
+    std::nth_element(values.begin(), at, values.end());
+    value_max = *at;
   }
   const std::vector<View> views = side_and_top_views(panels.front().V, options.up_axis);
   const int s = options.supersample;
@@ -62,7 +71,7 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
                 &out);
     }
     char label[64];
-    std::snprintf(label, sizeof label, "0 .. %.3g", value_max);
+    std::snprintf(label, sizeof label, "0 .. %.3g+", value_max);
     const auto [tw, th] = text_size(label, 1);
     draw_text(label, x0 - tw - 6, y0 - 1, ink, 1, &out);
   }

@@ -33,7 +33,8 @@ constexpr int kCaptionHeight = 28;
 /// Renders the panels side by side: image size columns * panel_width by
 /// kCaptionHeight + views * panel_height. The views (side_and_top_views) come
 /// from the first panel's shape; each row uses one scale for all columns.
-/// Panels with values are coloured by them on one common scale [0, max].
+/// Panels with values are coloured by them on one common scale from 0 to the
+/// 98th percentile of all values (higher values take the top colour).
 /// @throws UsageError for no panels, sizes < 16 pixels, supersample < 1, bad up_axis,
 ///         or panel data of inconsistent sizes
 Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOptions& options);
