@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "mesh/write_surface_mesh.h"
 #include "render/camera.h"
 #include "render/color_map.h"
 #include "render/plot_convergence.h"
@@ -211,10 +212,11 @@ TEST(RenderCli, DemoBeforeAfterAndConvergence) {
 
 TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {
   test::TempDir dir;
-  const std::string picture = dir.file("sweep.png");
-  ASSERT_EQ(
-      run_unfold("--demo_pose 2 --k_iter 5 --num_cascades 2 --beta_sweep 1,4 --render " + picture),
-      0);
+  const std::string picture = dir.file("sweep.png"), input = dir.file("ellipsoid.off");
+  SurfaceMesh ellipsoid = test::uv_sphere(10, 16);  // small: the sweep runs the solve 3 times
+  ellipsoid.V.col(0) *= 3;
+  write_surface_mesh(input, ellipsoid);
+  ASSERT_EQ(run_unfold("--input " + input + " --beta_sweep 1,4 --render " + picture), 0);
   const Png png = read_png(picture);
   EXPECT_EQ(png.width, 3 * RenderOptions().panel_width);
   EXPECT_EQ(run_unfold("--beta_sweep 1,x --render " + picture), 2);
