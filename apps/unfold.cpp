@@ -4,6 +4,8 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "apps/app_main.h"
 #include "config/config_keys.h"
@@ -12,8 +14,15 @@
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
+#include "pipeline/beta_sweep.h"
+#include "pipeline/convergence_csv.h"
 #include "pipeline/metrics_json.h"
+#include "pipeline/result_pictures.h"
+#include "pipeline/tet_fields.h"
 #include "pipeline/unfold_surface.h"
+#include "render/camera.h"
+#include "render/plot_convergence.h"
+#include "render/write_png.h"
 #include "shapes/articulated_shape.h"
 
 DEFINE_string(input, "",
@@ -25,6 +34,19 @@ DEFINE_string(output, "",
 DEFINE_string(input_copy, "", "also write the surface that was unfolded (e.g. the demo shape)");
 DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (TetGen .node/.ele)");
 DEFINE_string(metrics_json, "", "metrics, timings and the per-iteration history as JSON");
+DEFINE_string(render, "",
+              "before/after picture (.png): side and top views of the input and the canonical "
+              "pose, same framing; with --beta_sweep the sweep instead");
+DEFINE_string(render_color, "shading",
+              "colouring of the canonical pose in --render: shading, or rigidity (per-vertex "
+              "rigidity error)");
+DEFINE_string(render_up, "z", "the shape's up axis for --render: x, y or z (TOSCA: z, FAUST: y)");
+DEFINE_string(beta_sweep, "",
+              "comma-separated betas relative to n/lambda_2 (e.g. 0.5,1,2,4): unfold once per "
+              "beta on the same tet mesh and render them side by side into --render");
+DEFINE_string(convergence, "", "energy and edge ratio per iteration as CSV");
+DEFINE_string(convergence_png, "",
+              "plot (.png) of the energy and edge ratio per iteration, cascade boundaries marked");
 DEFINE_string(config, "", "YAML config; empty: the built-in defaults (= configs/default.yaml)");
 
 #define UNFOLD_DEFINE_KEY_FLAG(flag, path, member, help) \
@@ -50,9 +72,23 @@ int run() {
   for (const std::string& path : {FLAGS_output, FLAGS_input_copy})
     if (!path.empty()) unfold::check_surface_mesh_format(path);
   unfold::check_tet_mesh_format(FLAGS_tet_output);
+  unfold::check_png_format(FLAGS_render);
+  unfold::check_png_format(FLAGS_convergence_png);
   for (const std::string& path :
-       {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_metrics_json})
+       {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_metrics_json, FLAGS_render,
+        FLAGS_convergence, FLAGS_convergence_png})
     if (!path.empty()) unfold::check_writable_destination(path);
+  unfold::RenderOptions render;
+  render.up_axis = unfold::axis_index(FLAGS_render_up, "--render_up");
+  if (FLAGS_render_color != "shading" && FLAGS_render_color != "rigidity")
+    throw unfold::UsageError("--render_color: '" + FLAGS_render_color +
+                             "' is not shading or rigidity");
+  std::vector<double> sweep;
+  if (!FLAGS_beta_sweep.empty()) {
+    sweep = unfold::parse_beta_list(FLAGS_beta_sweep);
+    if (FLAGS_render.empty())
+      throw unfold::UsageError("--beta_sweep needs --render (the picture it makes)");
+  }
 
   unfold::SurfaceMesh surface;
   if (FLAGS_input.empty()) {
@@ -66,8 +102,22 @@ int run() {
   if (!FLAGS_output.empty()) unfold::write_surface_mesh(FLAGS_output, result.canonical);
   if (!FLAGS_input_copy.empty()) unfold::write_surface_mesh(FLAGS_input_copy, result.surface);
   if (!FLAGS_tet_output.empty())
-    unfold::write_tet_mesh(FLAGS_tet_output, result.tet_canonical, result.tets.T);
+    unfold::write_tet_mesh(FLAGS_tet_output, result.tet_canonical, result.tets.T,
+                           unfold::canonical_tet_fields(result));
   if (!FLAGS_metrics_json.empty()) unfold::write_metrics_json(FLAGS_metrics_json, result, options);
+  if (!FLAGS_convergence.empty())
+    unfold::write_convergence_csv(FLAGS_convergence, result.cascade.history);
+  if (!FLAGS_convergence_png.empty())
+    unfold::write_png(
+        FLAGS_convergence_png,
+        unfold::plot_convergence(result.cascade.history, options.cascade.edge_ratio_band));
+  if (!sweep.empty())
+    unfold::write_png(FLAGS_render,
+                      unfold::render_beta_sweep(unfold::unfold_beta_sweep(result, options, sweep),
+                                                sweep, render));
+  else if (!FLAGS_render.empty())
+    unfold::write_png(FLAGS_render, unfold::render_before_after(result, render,
+                                                                FLAGS_render_color == "rigidity"));
 
   const auto& m = result.metrics;
   std::printf(

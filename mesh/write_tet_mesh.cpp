@@ -14,12 +14,28 @@ bool ends_with(const std::string& s, const std::string& suffix) {
          s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-void write_vtu(std::ostream& out, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T) {
+void write_fields(std::ostream& out, const char* tag,
+                  const std::vector<std::pair<std::string, Eigen::VectorXd>>& fields) {
+  if (fields.empty()) return;
+  out << '<' << tag << " Scalars=\"" << fields.front().first << "\">\n";
+  for (const auto& [name, values] : fields) {
+    out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+    for (Eigen::Index i = 0; i < values.size(); ++i) out << values[i] << '\n';
+    out << "</DataArray>\n";
+  }
+  out << "</" << tag << ">\n";
+}
+
+void write_vtu(std::ostream& out, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T,
+               const TetMeshFields& fields) {
   out << std::setprecision(17);
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << V.rows() << "\" NumberOfCells=\""
-      << T.rows() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+      << T.rows() << "\">\n";
+  write_fields(out, "PointData", fields.per_vertex);
+  write_fields(out, "CellData", fields.per_tet);
+  out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
       << "format=\"ascii\">\n";
   for (Eigen::Index i = 0; i < V.rows(); ++i)
     out << V(i, 0) << ' ' << V(i, 1) << ' ' << V(i, 2) << '\n';
@@ -41,10 +57,21 @@ void check_tet_mesh_format(const std::string& path) {
     throw OutputError("unsupported tet mesh format '" + path + "' (use .vtu or .node)");
 }
 
-void write_tet_mesh(const std::string& path, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T) {
+void write_tet_mesh(const std::string& path, const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T,
+                    const TetMeshFields& fields) {
   check_tet_mesh_format(path);
+  for (const auto& [name, values] : fields.per_vertex)
+    if (values.size() != V.rows())
+      throw UsageError("write_tet_mesh: vertex field '" + name + "' has " +
+                       std::to_string(values.size()) + " values for " + std::to_string(V.rows()) +
+                       " vertices");
+  for (const auto& [name, values] : fields.per_tet)
+    if (values.size() != T.rows())
+      throw UsageError("write_tet_mesh: tet field '" + name + "' has " +
+                       std::to_string(values.size()) + " values for " + std::to_string(T.rows()) +
+                       " tets");
   if (ends_with(path, ".vtu")) {
-    write_file_atomically(path, [&](std::ostream& out) { write_vtu(out, V, T); });
+    write_file_atomically(path, [&](std::ostream& out) { write_vtu(out, V, T, fields); });
     return;
   }
   // TetGen's own format, 0-based as TetGen's -z writes it.

@@ -14,4 +14,11 @@ namespace unfold {
 /// @throws InputError if the graph has no edges or an edge has zero rest length
 double edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q);
 
+/// Per vertex i: the mean of |q_i - q_j| / |p_i - p_j| over its neighbours j (its
+/// local stretch; 1 for an isolated vertex).
+/// @throws UsageError if the sizes disagree
+/// @throws InputError if an edge has zero rest length
+Eigen::VectorXd vertex_edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                  const Eigen::MatrixX3d& Q);
+
 }  // namespace unfold

@@ -117,7 +117,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   const Eigen::MatrixX3d& P = result.tets.V;
   const Eigen::MatrixX3d& Q = result.tet_canonical;
   UnfoldMetrics& m = result.metrics;
-  m.E_rig = rigidity_error(graph, P, Q).mean;
+  const RigidityError rig = rigidity_error(graph, P, Q);
+  m.E_rig = rig.mean;
+  m.rigidity_per_vertex = rig.per_vertex;
   const StretchError str = stretch_error(P, Q, options.stretch_metric);
   m.E_str = str.value;
   m.E_str_exact = str.exact;

@@ -21,6 +21,7 @@ struct UnfoldMetrics {
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
   int inverted_tets = 0;    ///< tetrahedra whose orientation flipped
   double seconds = 0;
+  Eigen::VectorXd rigidity_per_vertex;  ///< E_rig's term of each tet vertex (RigidityError)
 };
 
 /// A surface checked, simplified if asked, and tetrahedralized: what every

@@ -20,7 +20,9 @@ struct AppRun {
 };
 
 AppRun run_unfold(const std::string& args) {
-  const std::string err_path = ::testing::TempDir() + "cli_stderr.txt";
+  // One file per test: ctest runs the tests as parallel processes.
+  const std::string err_path = ::testing::TempDir() + "cli_stderr_" +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name();
   const int status = std::system(
       (std::string(UNFOLD_BIN_DIR) + "/unfold " + args + " 2>" + err_path + " >/dev/null").c_str());
   std::ifstream in(err_path);

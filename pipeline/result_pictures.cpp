@@ -1,0 +1,36 @@
+#include "pipeline/result_pictures.h"
+
+#include <cstdio>
+
+#include "core/errors.h"
+
+namespace unfold {
+
+Image render_before_after(const UnfoldResult& result, const RenderOptions& options,
+                          bool color_by_rigidity) {
+  const Eigen::MatrixX3i F = triangulate_faces(result.surface);
+  RenderPanel before{"input", result.surface.V, F, {}};
+  RenderPanel after{"canonical", result.canonical.V, F, {}};
+  if (color_by_rigidity) {
+    after.title = "canonical: rigidity error";
+    after.values = result.metrics.rigidity_per_vertex.head(result.canonical.V.rows());
+  }
+  return render_comparison({before, after}, options);
+}
+
+Image render_beta_sweep(const std::vector<UnfoldResult>& runs, const std::vector<double>& betas,
+                        const RenderOptions& options) {
+  if (runs.size() != betas.size() || runs.empty())
+    throw UsageError("render_beta_sweep: " + std::to_string(runs.size()) + " runs for " +
+                     std::to_string(betas.size()) + " betas");
+  const Eigen::MatrixX3i F = triangulate_faces(runs.front().surface);
+  std::vector<RenderPanel> panels = {{"input", runs.front().surface.V, F, {}}};
+  for (size_t k = 0; k < runs.size(); ++k) {
+    char title[64];
+    std::snprintf(title, sizeof title, "beta %g n/l2", betas[k]);
+    panels.push_back({title, runs[k].canonical.V, F, {}});
+  }
+  return render_comparison(panels, options);
+}
+
+}  // namespace unfold

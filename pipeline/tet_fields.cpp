@@ -1,0 +1,21 @@
+#include "pipeline/tet_fields.h"
+
+#include "mesh/edge_graph.h"
+#include "metrics/edge_ratio.h"
+#include "metrics/tet_deformation.h"
+
+namespace unfold {
+
+TetMeshFields canonical_tet_fields(const UnfoldResult& result) {
+  const Eigen::MatrixX3d& P = result.tets.V;
+  const Eigen::MatrixX3d& Q = result.tet_canonical;
+  const EdgeGraph graph = build_edge_graph(int(P.rows()), result.tets.T);
+  const TetDeformation tets = tet_deformation(P, Q, result.tets.T);
+  TetMeshFields fields;
+  fields.per_vertex = {{"rigidity_error", result.metrics.rigidity_per_vertex},
+                       {"stretch_ratio", vertex_edge_ratio(graph, P, Q)}};
+  fields.per_tet = {{"volume_ratio", tets.volume_ratio}, {"rigidity", tets.rigidity}};
+  return fields;
+}
+
+}  // namespace unfold

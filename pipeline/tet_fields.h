@@ -1,0 +1,17 @@
+// The per-vertex and per-tet fields written with the canonical tet mesh, so a
+// viewer (ParaView) can colour where the unfolding stretched or bent.
+#pragma once
+
+#include "mesh/write_tet_mesh.h"
+#include "pipeline/unfold_surface.h"
+
+namespace unfold {
+
+/// Fields of a finished run: per vertex "rigidity_error" (E_rig's term,
+/// metrics.rigidity_per_vertex) and "stretch_ratio" (vertex_edge_ratio); per tet
+/// "volume_ratio" and "rigidity" (tet_deformation).
+/// @param result a result of unfold_surface / unfold_prepared
+/// @throws InputError if a rest tet or edge is degenerate
+TetMeshFields canonical_tet_fields(const UnfoldResult& result);
+
+}  // namespace unfold

@@ -1,0 +1,81 @@
+#include "render/render_comparison.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "core/errors.h"
+#include "render/camera.h"
+#include "render/color_map.h"
+#include "render/draw_2d.h"
+#include "render/rasterize.h"
+
+namespace unfold {
+
+Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOptions& options) {
+  if (panels.empty()) throw UsageError("render_comparison: no panels");
+  if (options.panel_width < 16 || options.panel_height < 16 || options.supersample < 1)
+    throw UsageError("render_comparison: panels need at least 16 x 16 pixels, supersample >= 1");
+  std::vector<double> values;
+  for (const RenderPanel& p : panels) {
+    if (p.values.size() != 0 && p.values.size() != p.V.rows())
+      throw UsageError("render_comparison: panel '" + p.title + "' has " +
+                       std::to_string(p.values.size()) + " values for " +
+                       std::to_string(p.V.rows()) + " vertices");
+    values.insert(values.end(), p.values.data(), p.values.data() + p.values.size());
+  }
+  // The colour scale ends at the 98th percentile: a few extreme vertices would
+  // otherwise push every other one into the darkest colours.
+  double value_max = 0;
+  if (!values.empty()) {
+    auto at = values.begin() + std::ptrdiff_t(0.98 * double(values.size() - 1));
+    std::nth_element(values.begin(), at, values.end());
+    value_max = *at;
+  }
+  const std::vector<View> views = side_and_top_views(panels.front().V, options.up_axis);
+  const int s = options.supersample;
+  const int w = options.panel_width * s, h = options.panel_height * s;
+  Image out(int(panels.size()) * options.panel_width,
+            kCaptionHeight + int(views.size()) * options.panel_height);
+  const Rgb ink{40, 40, 40};
+  for (size_t row = 0; row < views.size(); ++row) {
+    std::vector<const Eigen::MatrixX3d*> shapes;
+    for (const RenderPanel& p : panels) shapes.push_back(&p.V);
+    const double scale = common_scale(shapes, views[row], w, h, 8 * s);
+    for (size_t col = 0; col < panels.size(); ++col) {
+      const RenderPanel& p = panels[col];
+      Canvas canvas(w, h, {255, 255, 255});
+      const Eigen::MatrixX3f colors =
+          p.values.size() ? color_map(p.values, 0, value_max) : Eigen::MatrixX3f();
+      render_mesh(p.V, p.F, colors, views[row], scale, options.shading, &canvas);
+      const int x = int(col) * options.panel_width,
+                y = kCaptionHeight + int(row) * options.panel_height;
+      paste(downsample(canvas.image, s), x, y, &out);
+      if (col == 0) draw_text(views[row].name, x + 4, y + 4, {120, 120, 120}, 1, &out);
+      if (col > 0)  // a thin separator between columns
+        fill_rect(x, y, x + 1, y + options.panel_height, {210, 210, 210}, &out);
+    }
+  }
+  for (size_t col = 0; col < panels.size(); ++col) {
+    const auto [tw, th] = text_size(panels[col].title, 2);
+    draw_text(panels[col].title,
+              int(col) * options.panel_width + std::max(2, (options.panel_width - tw) / 2),
+              (kCaptionHeight - th) / 2 + 2, ink, 2, &out);
+  }
+  if (value_max > 0) {  // colour bar legend, bottom right
+    const int bar_w = 120, bar_h = 8, x0 = out.width - bar_w - 10, y0 = out.height - bar_h - 8;
+    for (int x = 0; x < bar_w; ++x) {
+      const Eigen::Vector3f c = color_map(double(x) / (bar_w - 1));
+      fill_rect(x0 + x, y0, x0 + x + 1, y0 + bar_h,
+                {std::uint8_t(c[0] * 255), std::uint8_t(c[1] * 255), std::uint8_t(c[2] * 255)},
+                &out);
+    }
+    char label[64];
+    std::snprintf(label, sizeof label, "0 .. %.3g+", value_max);
+    const auto [tw, th] = text_size(label, 1);
+    draw_text(label, x0 - tw - 6, y0 - 1, ink, 1, &out);
+  }
+  return out;
+}
+
+}  // namespace unfold

@@ -1,0 +1,42 @@
+// Side-by-side pictures: one column per shape (before/after, or one per beta),
+// one row per view, the same cameras and scale for every column so that the
+// columns compare directly.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "render/image.h"
+#include "render/render_mesh.h"
+
+namespace unfold {
+
+struct RenderPanel {
+  std::string title;
+  Eigen::MatrixX3d V;
+  Eigen::MatrixX3i F;      ///< triangles
+  Eigen::VectorXd values;  ///< per-vertex values to colour by, or empty for plain shading
+};
+
+struct RenderOptions {
+  int panel_width = 360;   ///< pixels per column
+  int panel_height = 240;  ///< pixels per view row
+  int up_axis = 2;         ///< 0, 1, 2: x, y, z is up in the shapes (TOSCA and the demo: z)
+  Shading shading = Shading::kGouraud;
+  int supersample = 2;  ///< drawn this many times larger, then averaged (anti-aliasing)
+};
+
+/// Height of the caption band above the panels, in pixels.
+constexpr int kCaptionHeight = 28;
+
+/// Renders the panels side by side: image size columns * panel_width by
+/// kCaptionHeight + views * panel_height. The views (side_and_top_views) come
+/// from the first panel's shape; each row uses one scale for all columns.
+/// Panels with values are coloured by them on one common scale from 0 to the
+/// 98th percentile of all values (higher values take the top colour).
+/// @throws UsageError for no panels, sizes < 16 pixels, supersample < 1, bad up_axis,
+///         or panel data of inconsistent sizes
+Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOptions& options);
+
+}  // namespace unfold
