@@ -49,8 +49,10 @@ TEST(Tetrahedralize, SelfIntersectingSurfaceIsAnErrorNotACrash) {
     for (int& v : f) v += 6;
     folded.faces.push_back(f);
   }
+  TetOptions conforming;
+  conforming.route = "conforming";
   try {
-    tetrahedralize(folded, TetOptions{});
+    tetrahedralize(folded, conforming);
     FAIL() << "TetGen accepted a self-intersecting surface";
   } catch (const NumericalError& e) {
     EXPECT_NE(std::string(e.what()).find("TetGen"), std::string::npos) << e.what();
