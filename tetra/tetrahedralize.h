@@ -43,7 +43,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
 TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality);
 
 /// Delaunay tetrahedralization (TetGen point mode) of the surface vertices and
-/// interior grid points (spacing twice the mean edge length), keeping the tets
+/// interior grid points (spacing three times the mean edge length), keeping the tets
 /// inside by the generalized winding number: at the centroid, and at the
 /// midpoint of every edge joining two surface vertices that is not a surface
 /// edge (so tets bridging two touching parts are carved). Works on

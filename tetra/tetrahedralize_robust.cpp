@@ -127,9 +127,10 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
     volume += surface.V.row(F(t, 0)).dot(surface.V.row(F(t, 1)).cross(surface.V.row(F(t, 2))));
   const double orientation = volume < 0 ? -1 : 1;
 
-  // Interior points at twice the mean edge length keep the tets well shaped
-  // inside without many more vertices than the surface has.
-  const Eigen::MatrixX3d interior = interior_grid_points(surface.V, tree, orientation, 2 * length);
+  // Interior points at three times the mean edge length: measured on the
+  // TOSCA/FAUST meshes (docs/tetrahedralization.md), lower E_rig than twice it
+  // and a third of the interior points.
+  const Eigen::MatrixX3d interior = interior_grid_points(surface.V, tree, orientation, 3 * length);
   const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * length);
   tetgenio in;
   in.firstnumber = 0;
@@ -206,18 +207,34 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
         best[size_t(v)] = t;
     }
   for (int v = 0; v < n; ++v)
-    if (!used[size_t(v)]) {
-      if (best[size_t(v)] < 0)
-        throw NumericalError("tetrahedralization (robust route): surface vertex " +
-                             std::to_string(v) + " is in no usable tetrahedron");
+    if (!used[size_t(v)] && best[size_t(v)] >= 0) {
       if (!keep[size_t(best[size_t(v)])]) ++rescued;
       keep[size_t(best[size_t(v)])] = 1;
       for (int k = 0; k < 4; ++k) used[size_t(T(best[size_t(v)], k))] = 1;
     }
+  // A vertex whose every tet also holds a copy of it (all dropped as
+  // degenerate) gets a copy of a kept tet of its twin: same shape, own index.
+  std::vector<Eigen::RowVector4i> shared;
+  for (int v = 0; v < n; ++v) {
+    if (used[size_t(v)]) continue;
+    for (int t = 0; t < num_delaunay && !used[size_t(v)]; ++t)
+      for (int k = 0; k < 4 && keep[size_t(t)]; ++k)
+        if (T(t, k) != v && V.row(T(t, k)) == V.row(v)) {
+          shared.push_back(T.row(t));
+          shared.back()(k) = v;
+          used[size_t(v)] = 1;
+          break;
+        }
+    if (!used[size_t(v)])
+      throw NumericalError("tetrahedralization (robust route): surface vertex " +
+                           std::to_string(v) + " is in no usable tetrahedron");
+  }
   UnionFind components(int(V.rows()));
   for (int t = 0; t < num_delaunay; ++t)
     if (keep[size_t(t)])
       for (int k = 1; k < 4; ++k) components.unite(T(t, 0), T(t, k));
+  for (const Eigen::RowVector4i& tet : shared)
+    for (int k = 1; k < 4; ++k) components.unite(tet(0), tet(k));
   int num_components = 0;
   for (int v = 0; v < int(V.rows()); ++v)
     num_components += used[size_t(v)] && components.find(v) == v;
@@ -255,12 +272,17 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   for (int v = 0; v < int(V.rows()); ++v)
     if (index[size_t(v)] >= 0) tets.V.row(index[size_t(v)]) = V.row(v);
   const int num_kept = int(std::count(keep.begin(), keep.end(), 1));
-  tets.T.resize(num_kept, 4);
-  for (int t = 0, row = 0; t < num_delaunay; ++t)
+  tets.T.resize(num_kept + Eigen::Index(shared.size()), 4);
+  Eigen::Index row = 0;
+  for (int t = 0; t < num_delaunay; ++t)
     if (keep[size_t(t)]) {
       for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(T(t, k))];
       ++row;
     }
+  for (const Eigen::RowVector4i& tet : shared) {
+    for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(tet(k))];
+    ++row;
+  }
   if (report) {
     report->num_removed_tets = num_delaunay - num_kept;
     report->num_rescued_tets = rescued;
