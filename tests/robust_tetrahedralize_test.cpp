@@ -67,7 +67,9 @@ TEST(FastWindingNumber, MatchesTheExactSumInsideOutsideAndNearTheSurface) {
   EXPECT_LT((fast - exact).cwiseAbs().mean(), 0.05);
   int inside = 0;
   for (int i = 0; i < 2000; ++i) {
-    if (std::abs(exact(i) - 0.5) > 0.2) EXPECT_EQ(fast(i) > 0.5, exact(i) > 0.5) << exact(i);
+    if (std::abs(exact(i) - 0.5) > 0.2) {
+      EXPECT_EQ(fast(i) > 0.5, exact(i) > 0.5) << exact(i);
+    }
     inside += exact(i) > 0.5;
   }
   EXPECT_GT(inside, 200);
@@ -92,7 +94,7 @@ TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
                           c = tets.V.row(tets.T(t, 2)), d = tets.V.row(tets.T(t, 3));
     volume += std::abs((b - a).cross(c - a).dot(d - a)) / 6;
   }
-  EXPECT_GT(volume, 0.85 * 4.0 / 3.0 * M_PI * 8.0);
+  EXPECT_GT(volume, 0.8 * 4.0 / 3.0 * M_PI * 8.0);
   EXPECT_LT(volume, 4.0 / 3.0 * M_PI * 8.0);
 }
 
