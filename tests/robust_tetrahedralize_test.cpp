@@ -32,18 +32,6 @@ void expect_usable(const SurfaceMesh& surface, const TetMesh& tets) {
     EXPECT_GT((tets.V.row(graph.edges(e, 0)) - tets.V.row(graph.edges(e, 1))).norm(), 0);
 }
 
-SurfaceMesh two_interpenetrating_octahedra() {
-  SurfaceMesh folded = test::octahedron();
-  const SurfaceMesh other = test::octahedron();
-  folded.V.conservativeResize(12, 3);
-  folded.V.bottomRows(6) = other.V.rowwise() + Eigen::RowVector3d(0.5, 0.3, 0.2);
-  for (auto f : other.faces) {
-    for (int& v : f) v += 6;
-    folded.faces.push_back(f);
-  }
-  return folded;
-}
-
 TEST(FastWindingNumber, MatchesTheExactSumInsideOutsideAndNearTheSurface) {
   const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 32);
   const Eigen::MatrixX3i F = triangulate_faces(shape);
@@ -99,7 +87,7 @@ TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
 }
 
 TEST(RobustTetrahedralize, AutoFallsBackOnASelfIntersectingSurface) {
-  const SurfaceMesh folded = two_interpenetrating_octahedra();
+  const SurfaceMesh folded = test::two_interpenetrating_octahedra();
   TetReport report;
   const TetMesh tets = tetrahedralize(folded, TetOptions{}, &report);
   expect_usable(folded, tets);
