@@ -9,7 +9,8 @@
   X(method, "method", method, "solver backend: local_global (the paper's) or ceres (L-BFGS)")  \
   X(target_vertices, "simplify.target_vertices", target_vertices,                              \
     "simplify the surface to about this many vertices first; 0 keeps all")                     \
-  X(tet_route, "tetrahedralize.route", tet.route, "tetrahedralization route: conforming")      \
+  X(tet_route, "tetrahedralize.route", tet.route,                                              \
+    "tetrahedralization route: auto (conforming, else robust), conforming, robust")            \
   X(tet_quality, "tetrahedralize.quality", tet.quality,                                        \
     "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                   \
   X(beta_mode, "beta.mode", beta_mode,                                                         \

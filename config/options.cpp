@@ -165,8 +165,9 @@ void validate_options(const Options& o) {
           "must be local_global or ceres, got '" + o.method + "'");
   require(o.target_vertices == 0 || o.target_vertices >= 4, "simplify.target_vertices",
           "must be 0 (keep all) or at least 4");
-  require(o.tet.route == "conforming", "tetrahedralize.route",
-          "must be conforming, got '" + o.tet.route + "'");
+  require(o.tet.route == "auto" || o.tet.route == "conforming" || o.tet.route == "robust",
+          "tetrahedralize.route",
+          "must be auto, conforming or robust, got '" + o.tet.route + "'");
   require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),
           "tetrahedralize.quality", "must be 0 (off) or a finite number >= 1");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",

@@ -64,6 +64,9 @@ void write_metrics_json(const std::string& path, const UnfoldResult& r, const Op
         << "  \"tetrahedralization\": {\"route\": " << quoted(r.tet_report.route)
         << ", \"tets\": " << r.tet_report.num_tets
         << ", \"interior_points\": " << r.tet_report.num_interior_points
+        << ", \"removed_tets\": " << r.tet_report.num_removed_tets
+        << ", \"rescued_tets\": " << r.tet_report.num_rescued_tets
+        << ", \"fallback\": " << quoted(r.tet_report.fallback)
         << ", \"seconds\": " << number(r.tet_report.seconds) << "},\n"
         << "  \"seconds_tetrahedralize\": " << number(r.tet_report.seconds) << ",\n"
         << "  \"seconds_unfold\": " << number(r.seconds_unfold) << ",\n"

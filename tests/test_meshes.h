@@ -41,6 +41,19 @@ inline SurfaceMesh cube() {
   return m;
 }
 
+/// Two octahedra overlapping each other in one surface mesh (self-intersecting).
+inline SurfaceMesh two_interpenetrating_octahedra() {
+  SurfaceMesh folded = octahedron();
+  const SurfaceMesh other = octahedron();
+  folded.V.conservativeResize(12, 3);
+  folded.V.bottomRows(6) = other.V.rowwise() + Eigen::RowVector3d(0.5, 0.3, 0.2);
+  for (auto f : other.faces) {
+    for (int& v : f) v += 6;
+    folded.faces.push_back(f);
+  }
+  return folded;
+}
+
 /// UV sphere of radius `radius` with `rings` latitude bands and `segments`
 /// longitude steps: 2 + (rings - 1) * segments vertices, closed, one component.
 inline SurfaceMesh uv_sphere(int rings, int segments, double radius = 1.0) {

@@ -40,17 +40,11 @@ TEST(Tetrahedralize, KeepsSurfaceVerticesFirstAndFillsTheVolume) {
 }
 
 TEST(Tetrahedralize, SelfIntersectingSurfaceIsAnErrorNotACrash) {
-  // Two interpenetrating octahedra in one surface mesh.
-  SurfaceMesh folded = test::octahedron();
-  const SurfaceMesh other = test::octahedron();
-  folded.V.conservativeResize(12, 3);
-  folded.V.bottomRows(6) = other.V.rowwise() + Eigen::RowVector3d(0.5, 0.3, 0.2);
-  for (auto f : other.faces) {
-    for (int& v : f) v += 6;
-    folded.faces.push_back(f);
-  }
+  const SurfaceMesh folded = test::two_interpenetrating_octahedra();
+  TetOptions conforming;
+  conforming.route = "conforming";
   try {
-    tetrahedralize(folded, TetOptions{});
+    tetrahedralize(folded, conforming);
     FAIL() << "TetGen accepted a self-intersecting surface";
   } catch (const NumericalError& e) {
     EXPECT_NE(std::string(e.what()).find("TetGen"), std::string::npos) << e.what();

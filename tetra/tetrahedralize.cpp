@@ -1,5 +1,7 @@
 #include "tetra/tetrahedralize.h"
 
+#include <glog/logging.h>
+
 #include <chrono>
 
 #include "core/errors.h"
@@ -8,20 +10,34 @@ namespace unfold {
 
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, TetReport* report) {
   const auto start = std::chrono::steady_clock::now();
+  TetReport local;
+  TetReport& r = report ? *report : local;
+  r = TetReport();
   TetMesh tets;
   if (options.route == "conforming") {
     tets = tetrahedralize_conforming(surface, options.quality);
+    r.route = "conforming";
+  } else if (options.route == "robust") {
+    tets = tetrahedralize_robust(surface, &r);
+    r.route = "robust";
+  } else if (options.route == "auto") {
+    try {
+      tets = tetrahedralize_conforming(surface, options.quality);
+      r.route = "conforming";
+    } catch (const NumericalError& e) {
+      r.fallback = e.what();
+      LOG(INFO) << "conforming tetrahedralization failed (" << e.what()
+                << "); using the robust route";
+      tets = tetrahedralize_robust(surface, &r);
+      r.route = "robust";
+    }
   } else {
     throw UsageError("unknown tetrahedralization route '" + options.route +
-                     "' (known: conforming)");
+                     "' (known: auto, conforming, robust)");
   }
-  if (report) {
-    report->route = options.route;
-    report->num_tets = int(tets.T.rows());
-    report->num_interior_points = int(tets.V.rows()) - tets.num_surface_vertices;
-    report->seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
+  r.num_tets = int(tets.T.rows());
+  r.num_interior_points = int(tets.V.rows()) - tets.num_surface_vertices;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return tets;
 }
 

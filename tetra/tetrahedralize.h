@@ -11,14 +11,20 @@
 namespace unfold {
 
 struct TetOptions {
-  std::string route = "conforming";  ///< "conforming": TetGen's boundary-conforming mode (-pY)
-  double quality = 2.0;              ///< TetGen -q radius-edge bound; 0 turns refinement off
+  /// "conforming": TetGen's boundary-conforming mode (-pY), needs a clean surface;
+  /// "robust": Delaunay of surface and interior points carved by the winding number;
+  /// "auto": conforming, and robust when conforming fails.
+  std::string route = "auto";
+  double quality = 2.0;  ///< TetGen -q radius-edge bound (conforming route); 0 turns it off
 };
 
 struct TetReport {
-  std::string route;  ///< the route that produced the mesh
+  std::string route;  ///< the route that produced the mesh ("conforming" or "robust")
   int num_tets = 0;
   int num_interior_points = 0;  ///< Steiner points added inside (all after the surface ones)
+  int num_removed_tets = 0;     ///< robust: Delaunay tets carved away as outside
+  int num_rescued_tets = 0;     ///< robust: carved tets put back to connect every vertex
+  std::string fallback;         ///< auto: why the conforming route failed ("" if it did not)
   double seconds = 0;
 };
 
@@ -27,12 +33,25 @@ struct TetReport {
 /// @returns a TetMesh with V.topRows(surface.V.rows()) == surface.V, every
 ///          surface vertex used by some tetrahedron
 /// @throws UsageError for an unknown route, NumericalError when the route fails
-///         (TetGen's error kind is named), InputError for an open surface
+///         (TetGen's error kind is named; auto fails only if robust fails too),
+///         InputError for an open surface
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
                        TetReport* report = nullptr);
 
 /// TetGen in boundary-conforming mode with no Steiner points on the surface
 /// (switches -pYq). Needs a clean piecewise-linear complex: no self-intersections.
 TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality);
+
+/// Delaunay tetrahedralization (TetGen point mode) of the surface vertices and
+/// interior grid points (spacing three times the mean edge length), keeping the tets
+/// inside by the generalized winding number: at the centroid, and at the
+/// midpoint of every edge joining two surface vertices that is not a surface
+/// edge (so tets bridging two touching parts are carved). Works on
+/// self-intersecting, non-manifold or slightly open surfaces; vertices and
+/// faces are used as given, equal positions included.
+/// @param report if not null, receives num_removed_tets and num_rescued_tets
+/// @throws InputError for fewer than 4 vertices or no faces, NumericalError if
+///         TetGen fails or a surface vertex is in no usable tetrahedron
+TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report = nullptr);
 
 }  // namespace unfold

@@ -1,0 +1,131 @@
+#include "tetra/fast_winding_number.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace unfold {
+namespace {
+
+// Signed solid angle of triangle (a, b, c) seen from q (Van Oosterom and
+// Strackee 1983); positive when q is behind the triangle's normal.
+double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                   const Eigen::Vector3d& q) {
+  const Eigen::Vector3d x = a - q, y = b - q, z = c - q;
+  const double lx = x.norm(), ly = y.norm(), lz = z.norm();
+  const double numerator = x.dot(y.cross(z));
+  const double denominator = lx * ly * lz + x.dot(y) * lz + y.dot(z) * lx + z.dot(x) * ly;
+  return 2 * std::atan2(numerator, denominator);
+}
+
+double triangle_solid_angle(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int t,
+                            const Eigen::Vector3d& q) {
+  return solid_angle(V.row(F(t, 0)), V.row(F(t, 1)), V.row(F(t, 2)), q);
+}
+
+// Fills node `index` with triangles order[first, first + count) and builds its subtree.
+void build(FastWindingNumberTree& tree, const Eigen::MatrixX3d& centroids, int index, int first,
+           int count) {
+  FastWindingNumberTree::Node node;
+  node.first = first;
+  node.count = count;
+  double area = 0;
+  Eigen::AlignedBox3d box;
+  for (int k = first; k < first + count; ++k) {
+    const int t = tree.order[size_t(k)];
+    const Eigen::Vector3d a = tree.V.row(tree.F(t, 0)), b = tree.V.row(tree.F(t, 1)),
+                          c = tree.V.row(tree.F(t, 2));
+    const Eigen::Vector3d n = 0.5 * (b - a).cross(c - a);
+    node.area_normal += n;
+    node.center += n.norm() * centroids.row(t).transpose();
+    area += n.norm();
+    box.extend(centroids.row(t).transpose());
+  }
+  node.center = area > 0 ? Eigen::Vector3d(node.center / area) : box.center();
+  for (int k = first; k < first + count; ++k)
+    for (int j = 0; j < 3; ++j)
+      node.radius =
+          std::max(node.radius,
+                   (tree.V.row(tree.F(tree.order[size_t(k)], j)).transpose() - node.center).norm());
+  constexpr int kLeafSize = 8;
+  if (count > kLeafSize) {
+    int axis = 0;
+    box.sizes().maxCoeff(&axis);
+    const auto begin = tree.order.begin() + first, end = begin + count, middle = begin + count / 2;
+    std::nth_element(begin, middle, end,
+                     [&](int s, int t) { return centroids(s, axis) < centroids(t, axis); });
+    // Children are stored next to each other so one index finds both.
+    node.left = int(tree.nodes.size());
+    tree.nodes.resize(tree.nodes.size() + 2);
+    tree.nodes[size_t(index)] = node;
+    build(tree, centroids, node.left, first, count / 2);
+    build(tree, centroids, node.left + 1, first + count / 2, count - count / 2);
+  } else {
+    tree.nodes[size_t(index)] = node;
+  }
+}
+
+}  // namespace
+
+FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d& V,
+                                                         const Eigen::MatrixX3i& F,
+                                                         double accuracy) {
+  FastWindingNumberTree tree;
+  tree.V = V;
+  tree.F = F;
+  tree.accuracy = accuracy;
+  tree.order.resize(size_t(F.rows()));
+  for (int t = 0; t < int(F.rows()); ++t) tree.order[size_t(t)] = t;
+  if (F.rows() == 0) return tree;
+  Eigen::MatrixX3d centroids(F.rows(), 3);
+  for (int t = 0; t < int(F.rows()); ++t)
+    centroids.row(t) = (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))) / 3;
+  tree.nodes.resize(1);
+  build(tree, centroids, 0, 0, int(F.rows()));
+  return tree;
+}
+
+Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
+                                          const Eigen::MatrixX3d& Q) {
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
+  if (tree.nodes.empty()) return w;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (Eigen::Index i = 0; i < Q.rows(); ++i) {
+    const Eigen::Vector3d q = Q.row(i);
+    double sum = 0;
+    int stack[128];
+    int size = 0;
+    stack[size++] = 0;
+    while (size > 0) {
+      const FastWindingNumberTree::Node& node = tree.nodes[size_t(stack[--size])];
+      const Eigen::Vector3d d = node.center - q;
+      const double distance = d.norm();
+      if (distance > tree.accuracy * node.radius) {
+        // Far: the cluster acts as a dipole of moment area_normal at center.
+        sum += node.area_normal.dot(d) / (distance * distance * distance);
+      } else if (node.left < 0) {
+        for (int k = node.first; k < node.first + node.count; ++k)
+          sum += triangle_solid_angle(tree.V, tree.F, tree.order[size_t(k)], q);
+      } else {
+        stack[size++] = node.left;
+        stack[size++] = node.left + 1;
+      }
+    }
+    w(i) = sum / (4 * M_PI);
+  }
+  return w;
+}
+
+Eigen::VectorXd winding_number(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                               const Eigen::MatrixX3d& Q) {
+  Eigen::VectorXd w(Q.rows());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (Eigen::Index i = 0; i < Q.rows(); ++i) {
+    double sum = 0;
+    for (int t = 0; t < int(F.rows()); ++t) sum += triangle_solid_angle(V, F, t, Q.row(i));
+    w(i) = sum / (4 * M_PI);
+  }
+  return w;
+}
+
+}  // namespace unfold

@@ -1,0 +1,293 @@
+// The robust route: Delaunay tetrahedralization of the surface vertices plus
+// interior grid points, carved by the generalized winding number. It never
+// needs the surface to be a valid piecewise-linear complex, so
+// self-intersections, non-manifold edges and small holes do not stop it.
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "core/errors.h"
+#include "tetra/fast_winding_number.h"
+#include "tetra/run_tetgen.h"
+#include "tetra/tetrahedralize.h"
+
+namespace unfold {
+namespace {
+
+constexpr double kInside = 0.5;  // winding number above which a point is inside
+
+uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
+}
+
+double mean_edge_length(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+  double sum = 0;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    for (int k = 0; k < 3; ++k) sum += (V.row(F(t, k)) - V.row(F(t, (k + 1) % 3))).norm();
+  return F.rows() > 0 ? sum / double(3 * F.rows()) : 0;
+}
+
+// TetGen merges points at equal positions, which would drop a surface vertex
+// from the output. Later copies of a position are moved by a tiny deterministic
+// offset for TetGen only; tets joining two copies are dropped afterwards.
+Eigen::MatrixX3d separate_duplicates(const Eigen::MatrixX3d& V, double offset) {
+  std::vector<int> order(size_t(V.rows()));
+  std::iota(order.begin(), order.end(), 0);
+  const auto less = [&](int a, int b) {
+    for (int k = 0; k < 3; ++k)
+      if (V(a, k) != V(b, k)) return V(a, k) < V(b, k);
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less);
+  Eigen::MatrixX3d P = V;
+  int copy = 0;
+  for (size_t k = 1; k < order.size(); ++k) {
+    copy = V.row(order[k]) == V.row(order[k - 1]) ? copy + 1 : 0;
+    if (copy == 0) continue;
+    // Directions on a golden-angle spiral, so copies of one point stay apart.
+    const double z = 1 - 2 * std::fmod(copy * 0.618033988749895, 1.0), phi = copy * 2.39996323;
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    P.row(order[k]) += offset * Eigen::RowVector3d(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return P;
+}
+
+// Grid points inside the surface, at least `spacing / 2` from every surface vertex.
+Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindingNumberTree& tree,
+                                      double orientation, double spacing) {
+  const Eigen::RowVector3d low = V.colwise().minCoeff(), high = V.colwise().maxCoeff();
+  const Eigen::Array3i cells = ((high - low) / spacing).array().ceil().cast<int>().max(1);
+  // Surface vertices hashed into cells of the grid spacing, for the distance test.
+  std::unordered_map<int64_t, std::vector<int>> buckets;
+  const auto cell_of = [&](const Eigen::RowVector3d& p) {
+    return Eigen::Array3i(((p - low) / spacing).array().floor().cast<int>());
+  };
+  const auto key = [&](const Eigen::Array3i& c) {
+    return (int64_t(c(0) + 1) * (cells(1) + 3) + (c(1) + 1)) * (cells(2) + 3) + (c(2) + 1);
+  };
+  for (int i = 0; i < int(V.rows()); ++i) buckets[key(cell_of(V.row(i)))].push_back(i);
+  std::vector<Eigen::RowVector3d> candidates;
+  for (int x = 0; x < cells(0); ++x)
+    for (int y = 0; y < cells(1); ++y)
+      for (int z = 0; z < cells(2); ++z) {
+        const Eigen::RowVector3d p = low + spacing * Eigen::RowVector3d(x + 0.5, y + 0.5, z + 0.5);
+        const Eigen::Array3i c = cell_of(p);
+        bool far = true;
+        for (int dx = -1; dx <= 1 && far; ++dx)
+          for (int dy = -1; dy <= 1 && far; ++dy)
+            for (int dz = -1; dz <= 1 && far; ++dz) {
+              const auto it = buckets.find(key(c + Eigen::Array3i(dx, dy, dz)));
+              if (it == buckets.end()) continue;
+              for (int i : it->second)
+                if ((V.row(i) - p).norm() < spacing / 2) {
+                  far = false;
+                  break;
+                }
+            }
+        if (far) candidates.push_back(p);
+      }
+  Eigen::MatrixX3d Q(candidates.size(), 3);
+  for (size_t k = 0; k < candidates.size(); ++k) Q.row(Eigen::Index(k)) = candidates[k];
+  const Eigen::VectorXd w = orientation * fast_winding_number_solve(tree, Q);
+  Eigen::MatrixX3d inside((w.array() > kInside).count(), 3);
+  for (Eigen::Index k = 0, row = 0; k < Q.rows(); ++k)
+    if (w(k) > kInside) inside.row(row++) = Q.row(k);
+  return inside;
+}
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(size_t(n)) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[size_t(i)] != i) i = parent[size_t(i)] = parent[size_t(parent[size_t(i)])];
+    return i;
+  }
+  void unite(int a, int b) { parent[size_t(find(a))] = find(b); }
+};
+
+}  // namespace
+
+TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
+  const int n = int(surface.V.rows());
+  const Eigen::MatrixX3i F = triangulate_faces(surface);
+  if (n < 4 || F.rows() == 0)
+    throw InputError(
+        "tetrahedralization (robust route): the surface has fewer than 4 vertices "
+        "or no faces");
+  const double length = mean_edge_length(surface.V, F);
+  const FastWindingNumberTree tree = fast_winding_number_precomputation(surface.V, F);
+  // Winding numbers are -1 inside an inward-oriented surface: the signed volume decides.
+  double volume = 0;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    volume += surface.V.row(F(t, 0)).dot(surface.V.row(F(t, 1)).cross(surface.V.row(F(t, 2))));
+  const double orientation = volume < 0 ? -1 : 1;
+
+  // Interior points at three times the mean edge length: measured on the
+  // TOSCA/FAUST meshes (docs/tetrahedralization.md), lower E_rig than twice it
+  // and a third of the interior points.
+  const Eigen::MatrixX3d interior = interior_grid_points(surface.V, tree, orientation, 3 * length);
+  const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * length);
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = int(n + interior.rows());
+  in.pointlist = new REAL[size_t(in.numberofpoints) * 3];
+  for (int i = 0; i < in.numberofpoints; ++i)
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = i < n ? P(i, k) : interior(i - n, k);
+  // z: 0-based, Q: quiet; no p: a Delaunay tetrahedralization of the points.
+  TetgenOutput out = run_tetgen("zQ", in, "tetrahedralization (robust route)");
+  if (out.points.rows() != in.numberofpoints || out.tets.rows() == 0)
+    throw NumericalError("TetGen (robust route) merged or dropped input points");
+  Eigen::MatrixX3d V = std::move(out.points);
+  V.topRows(n) = surface.V;  // undo the duplicate separation
+  const Eigen::MatrixX4i& T = out.tets;
+  const int num_delaunay = int(T.rows());
+
+  // Carve: keep a tet when its centroid is inside and none of its edges
+  // between two surface vertices leaves the volume. The second test is what
+  // keeps touching limbs apart: a tet bridging the gap can have its centroid
+  // inside one limb, but its bridging edge's midpoint is in the gap.
+  Eigen::MatrixX3d centroids(num_delaunay, 3);
+  for (int t = 0; t < num_delaunay; ++t)
+    centroids.row(t) = (V.row(T(t, 0)) + V.row(T(t, 1)) + V.row(T(t, 2)) + V.row(T(t, 3))) / 4;
+  const Eigen::VectorXd w = orientation * fast_winding_number_solve(tree, centroids);
+  std::unordered_set<uint64_t> surface_edges;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    for (int k = 0; k < 3; ++k) surface_edges.insert(edge_key(F(t, k), F(t, (k + 1) % 3)));
+  const auto corner = [](int k, int e) {  // the 6 edges of a tet as corner pairs
+    static const int pairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    return pairs[e][k];
+  };
+  std::vector<char> degenerate(size_t(num_delaunay), 0);
+  std::unordered_map<uint64_t, int> tested;  // bridging-candidate edge -> row of midpoints
+  std::vector<int> tested_a, tested_b;
+  for (int t = 0; t < num_delaunay; ++t)
+    for (int e = 0; e < 6; ++e) {
+      const int a = T(t, corner(0, e)), b = T(t, corner(1, e));
+      if (V.row(a) == V.row(b)) degenerate[size_t(t)] = 1;
+      if (w(t) <= kInside || a >= n || b >= n || surface_edges.count(edge_key(a, b))) continue;
+      if (tested.emplace(edge_key(a, b), int(tested_a.size())).second) {
+        tested_a.push_back(a);
+        tested_b.push_back(b);
+      }
+    }
+  Eigen::MatrixX3d midpoints(tested_a.size(), 3);
+  for (size_t k = 0; k < tested_a.size(); ++k)
+    midpoints.row(Eigen::Index(k)) = (V.row(tested_a[k]) + V.row(tested_b[k])) / 2;
+  const Eigen::VectorXd w_mid = orientation * fast_winding_number_solve(tree, midpoints);
+  std::vector<char> keep(size_t(num_delaunay), 0);
+  for (int t = 0; t < num_delaunay; ++t) {
+    if (w(t) <= kInside || degenerate[size_t(t)]) continue;
+    bool inside = true;
+    for (int e = 0; e < 6 && inside; ++e) {
+      const auto it = tested.find(edge_key(T(t, corner(0, e)), T(t, corner(1, e))));
+      if (it != tested.end() && w_mid(it->second) <= kInside) inside = false;
+    }
+    keep[size_t(t)] = inside;
+  }
+
+  // Every surface vertex must end up in the one connected tet mesh (else the
+  // edge graph falls apart and nothing moves). A surface vertex in no kept tet
+  // gets its most-inside incident tet back; then, while the kept tets form
+  // several components, the most-inside carved tet joining two of them is put
+  // back. Carved tets rather than surface edges are added so that the result
+  // stays a tet mesh; the most-inside ones are the least likely to bridge a gap.
+  int rescued = 0;
+  std::vector<int> best(size_t(n), -1);
+  std::vector<char> used(size_t(V.rows()), 0);
+  for (int t = 0; t < num_delaunay; ++t)
+    for (int k = 0; k < 4; ++k) {
+      const int v = T(t, k);
+      if (keep[size_t(t)]) used[size_t(v)] = 1;
+      if (v < n && !degenerate[size_t(t)] && (best[size_t(v)] < 0 || w(t) > w(best[size_t(v)])))
+        best[size_t(v)] = t;
+    }
+  for (int v = 0; v < n; ++v)
+    if (!used[size_t(v)] && best[size_t(v)] >= 0) {
+      if (!keep[size_t(best[size_t(v)])]) ++rescued;
+      keep[size_t(best[size_t(v)])] = 1;
+      for (int k = 0; k < 4; ++k) used[size_t(T(best[size_t(v)], k))] = 1;
+    }
+  // A vertex whose every tet also holds a copy of it (all dropped as
+  // degenerate) gets a copy of a kept tet of its twin: same shape, own index.
+  std::vector<Eigen::RowVector4i> shared;
+  for (int v = 0; v < n; ++v) {
+    if (used[size_t(v)]) continue;
+    for (int t = 0; t < num_delaunay && !used[size_t(v)]; ++t)
+      for (int k = 0; k < 4 && keep[size_t(t)]; ++k)
+        if (T(t, k) != v && V.row(T(t, k)) == V.row(v)) {
+          shared.push_back(T.row(t));
+          shared.back()(k) = v;
+          used[size_t(v)] = 1;
+          break;
+        }
+    if (!used[size_t(v)])
+      throw NumericalError("tetrahedralization (robust route): surface vertex " +
+                           std::to_string(v) + " is in no usable tetrahedron");
+  }
+  UnionFind components(int(V.rows()));
+  for (int t = 0; t < num_delaunay; ++t)
+    if (keep[size_t(t)])
+      for (int k = 1; k < 4; ++k) components.unite(T(t, 0), T(t, k));
+  for (const Eigen::RowVector4i& tet : shared)
+    for (int k = 1; k < 4; ++k) components.unite(tet(0), tet(k));
+  int num_components = 0;
+  for (int v = 0; v < int(V.rows()); ++v)
+    num_components += used[size_t(v)] && components.find(v) == v;
+  if (num_components > 1) {
+    std::vector<int> carved;
+    for (int t = 0; t < num_delaunay; ++t)
+      if (!keep[size_t(t)] && !degenerate[size_t(t)]) carved.push_back(t);
+    std::stable_sort(carved.begin(), carved.end(), [&](int s, int t) { return w(s) > w(t); });
+    for (size_t k = 0; k < carved.size() && num_components > 1; ++k) {
+      const int t = carved[k];
+      std::vector<int> roots;
+      for (int c = 0; c < 4; ++c)
+        if (used[size_t(T(t, c))]) roots.push_back(components.find(T(t, c)));
+      std::sort(roots.begin(), roots.end());
+      const int joined = int(std::unique(roots.begin(), roots.end()) - roots.begin());
+      if (joined < 2) continue;
+      keep[size_t(t)] = 1;
+      ++rescued;
+      num_components -= joined - 1;
+      for (int c = 0; c < 4; ++c) {
+        used[size_t(T(t, c))] = 1;
+        components.unite(T(t, 0), T(t, c));
+      }
+    }
+  }
+
+  // Surface vertices first and in order, then the interior points still used.
+  std::vector<int> index(size_t(V.rows()), -1);
+  int count = 0;
+  for (int v = 0; v < int(V.rows()); ++v)
+    if (used[size_t(v)] || v < n) index[size_t(v)] = count++;
+  TetMesh tets;
+  tets.num_surface_vertices = n;
+  tets.V.resize(count, 3);
+  for (int v = 0; v < int(V.rows()); ++v)
+    if (index[size_t(v)] >= 0) tets.V.row(index[size_t(v)]) = V.row(v);
+  const int num_kept = int(std::count(keep.begin(), keep.end(), 1));
+  tets.T.resize(num_kept + Eigen::Index(shared.size()), 4);
+  Eigen::Index row = 0;
+  for (int t = 0; t < num_delaunay; ++t)
+    if (keep[size_t(t)]) {
+      for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(T(t, k))];
+      ++row;
+    }
+  for (const Eigen::RowVector4i& tet : shared) {
+    for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(tet(k))];
+    ++row;
+  }
+  if (report) {
+    report->num_removed_tets = num_delaunay - num_kept;
+    report->num_rescued_tets = rescued;
+  }
+  return tets;
+}
+
+}  // namespace unfold
