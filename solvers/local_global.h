@@ -9,10 +9,11 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include "mesh/edge_graph.h"
 #include "solvers/best_rotations.h"
+#include "solvers/sparse_ldlt.h"
 
 namespace unfold {
 
@@ -20,9 +21,12 @@ struct LocalGlobalData {
   const EdgeGraph* graph = nullptr;
   Eigen::MatrixX3d rest;          ///< rest positions P
   Eigen::SparseMatrix<double> L;  ///< graph Laplacian
+  Eigen::MatrixX3d LP;            ///< L P: the R_i-part of b is R_i (L P)_i
   double beta = 0;                ///< beta of the current factorization
   int negative_pivots = 0;        ///< inertia of (beta+1) L - n I: 1 iff the energy is bounded
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::SparseMatrix<double> A;  ///< (beta+1) L - n I, same pattern as L (diagonal included)
+  SparseLdlt ldlt;                ///< analyzed once, factorized per beta
+  mutable Eigen::MatrixX3d rhs;   ///< global_step's right-hand side buffer, reused
 };
 
 /// Builds L and the fill-reducing ordering and symbolic factorization.
@@ -40,6 +44,8 @@ void local_global_set_beta(double beta, LocalGlobalData* data);
 inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_pivots == 1; }
 
 /// Global step: the zero-mean minimiser of Eq. 3 over Q for fixed rotations R.
+/// Parallel right-hand side; no allocation once Q has n rows. Uses data's
+/// buffers, so one `data` must not serve two global steps at the same time.
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q);
 
 }  // namespace unfold

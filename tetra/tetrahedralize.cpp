@@ -10,7 +10,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   const auto start = std::chrono::steady_clock::now();
   TetMesh tets;
   if (options.route == "conforming") {
-    tets = tetrahedralize_conforming(surface, options.quality);
+    tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
   } else {
     throw UsageError("unknown tetrahedralization route '" + options.route +
                      "' (known: conforming)");

@@ -13,6 +13,7 @@ namespace unfold {
 struct TetOptions {
   std::string route = "conforming";  ///< "conforming": TetGen's boundary-conforming mode (-pY)
   double quality = 2.0;              ///< TetGen -q radius-edge bound; 0 turns refinement off
+  double max_volume = 0;             ///< TetGen -a bound on tet volume (mesh units^3); 0: no bound
 };
 
 struct TetReport {
@@ -32,7 +33,9 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
                        TetReport* report = nullptr);
 
 /// TetGen in boundary-conforming mode with no Steiner points on the surface
-/// (switches -pYq). Needs a clean piecewise-linear complex: no self-intersections.
-TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality);
+/// (switches -pYq, and -a when max_volume > 0: more interior points, for scale
+/// tests). Needs a clean piecewise-linear complex: no self-intersections.
+TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality,
+                                  double max_volume = 0);
 
 }  // namespace unfold
