@@ -12,11 +12,11 @@
 namespace unfold {
 
 struct CascadeOptions {
-  double beta = 0;        ///< starting beta (absolute), > 0
-  int k_iter = 15;        ///< iterations per cascade at most
-  double epsilon = 1e-4;  ///< a cascade ends when |f_e / f_s - 1| < epsilon
-  int num_cascades = 4;   ///< cascades at most ("num")
-  double growth = 2.0;    ///< beta factor between cascades
+  double beta = 0;         ///< starting beta (absolute), > 0
+  int k_iter = 15;         ///< iterations per cascade at most
+  double epsilon = 1e-4;   ///< a cascade ends when |f_e / f_s - 1| < epsilon
+  int num_cascades = 4;    ///< cascades at most ("num")
+  double growth = 2.0;     ///< beta factor between cascades
   std::array<double, 2> edge_ratio_band = {0.95, 1.05};  ///< stop once the edge ratio is inside
 };
 
