@@ -1,11 +1,13 @@
-// Timings of the solver's parts on one tet mesh: numeric factorization, one
-// forward/backward solve, one local step, one local-global iteration, the whole
+// Timings of the solver's parts on one tet mesh: symbolic analysis, numeric
+// factorization and one forward/backward solve for each sparse LDL^T backend,
+// one local step, one global step, one local-global iteration, the whole
 // cascade, and the metrics. The mesh is $UNFOLD_BENCH_MESH, else TOSCA wolf0
 // from ../shared/data, else the built-in demo shape.
 //   build/bin/unfold_bench [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
 #include <glog/logging.h>
 
+#include <Eigen/Geometry>
 #include <cstdio>
 #include <cstdlib>
 
@@ -18,6 +20,7 @@
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
+#include "solvers/sparse_ldlt.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -70,30 +73,46 @@ struct SolverState {
   }
 };
 
+// Backends of the sparse LDL^T, compared on (beta+1) L - n I (argument: 0 Eigen, 1 CHOLMOD).
+SparseLdlt::Backend backend_arg(const benchmark::State& state) {
+  return state.range(0) == 0 ? SparseLdlt::Backend::kEigen : SparseLdlt::Backend::kCholmod;
+}
+
+Eigen::SparseMatrix<double> global_matrix(const BenchMesh& m) {
+  Eigen::SparseMatrix<double> A = (m.beta + 1.0) * graph_laplacian(m.graph);
+  A.diagonal().array() -= double(m.graph.num_vertices);
+  return A;
+}
+
 void BM_SymbolicAnalysis(benchmark::State& state) {
-  const BenchMesh& m = bench_mesh();
+  const Eigen::SparseMatrix<double> A = global_matrix(bench_mesh());
   for (auto _ : state) {
-    LocalGlobalData data;
-    local_global_precomputation(m.graph, m.tets.V, &data);
-    benchmark::DoNotOptimize(data.L.nonZeros());
+    SparseLdlt ldlt(backend_arg(state));
+    ldlt.analyze(A);
   }
 }
-BENCHMARK(BM_SymbolicAnalysis)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SymbolicAnalysis)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_NumericFactorization(benchmark::State& state) {
-  const BenchMesh& m = bench_mesh();
-  LocalGlobalData data;
-  local_global_precomputation(m.graph, m.tets.V, &data);
-  for (auto _ : state) local_global_set_beta(m.beta, &data);
+  const Eigen::SparseMatrix<double> A = global_matrix(bench_mesh());
+  SparseLdlt ldlt(backend_arg(state));
+  ldlt.analyze(A);
+  for (auto _ : state) ldlt.factorize(A);
+  state.counters["negative_pivots"] = ldlt.negative_pivots();
 }
-BENCHMARK(BM_NumericFactorization)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NumericFactorization)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_Solve(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
+  const Eigen::SparseMatrix<double> A = global_matrix(m);
+  SparseLdlt ldlt(backend_arg(state));
+  ldlt.analyze(A);
+  ldlt.factorize(A);
   SolverState s(m);
-  for (auto _ : state) s.data.ldlt.solve(s.data.rhs, &s.Q);
+  Eigen::MatrixX3d x;
+  for (auto _ : state) ldlt.solve(s.data.rhs, &x);
 }
-BENCHMARK(BM_Solve)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solve)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_LocalStep(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
@@ -101,6 +120,13 @@ void BM_LocalStep(benchmark::State& state) {
   for (auto _ : state) best_rotations(m.graph, m.tets.V, s.Q, &s.R);
 }
 BENCHMARK(BM_LocalStep)->Unit(benchmark::kMillisecond);
+
+void BM_GlobalStep(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  SolverState s(m);
+  for (auto _ : state) global_step(s.data, s.R, &s.Q);
+}
+BENCHMARK(BM_GlobalStep)->Unit(benchmark::kMillisecond);
 
 void BM_Iteration(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
@@ -121,6 +147,37 @@ void BM_Cascade(benchmark::State& state) {
   state.counters["iterations"] = iterations;
 }
 BENCHMARK(BM_Cascade)->Unit(benchmark::kMillisecond);
+
+// The metrics on the bench mesh's rest pose against a rotated, scaled copy
+// (the cost does not depend on the shape), with the default options.
+Eigen::MatrixX3d moved(const BenchMesh& m) {
+  return 1.1 * m.tets.V * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+void BM_RigidityError(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const Eigen::MatrixX3d Q = moved(m);
+  for (auto _ : state) benchmark::DoNotOptimize(rigidity_error(m.graph, m.tets.V, Q).mean);
+}
+BENCHMARK(BM_RigidityError)->Unit(benchmark::kMillisecond);
+
+void BM_StretchError(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const Eigen::MatrixX3d Q = moved(m);
+  StretchError e;
+  for (auto _ : state) e = stretch_error(m.tets.V, Q);
+  state.counters["exact"] = e.exact;
+}
+BENCHMARK(BM_StretchError)->Unit(benchmark::kMillisecond);
+
+void BM_GeodesicError(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const Eigen::MatrixX3d Q = moved(m);
+  GeodesicError e;
+  for (auto _ : state) e = geodesic_error(m.graph, m.tets.V, Q);
+  state.counters["sources"] = e.sources_used;
+}
+BENCHMARK(BM_GeodesicError)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace unfold
