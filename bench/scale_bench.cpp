@@ -2,23 +2,30 @@
 // size, for the scaling table of docs/performance.md (bench/run runs it once
 // per size, each in its own process so that peak memory is per size).
 //   build/bin/scale_bench (--input=MESH | --demo_resolution=R) [--volume_divisions=M]
+//                         [--analyze_only]
 // --volume_divisions=M bounds every tetrahedron's volume by (enclosed volume) / M
 // (TetGen -a), which adds interior vertices: about M / 5 of them with the
 // default quality bound. Prints one tab-separated row:
 //   tet_vertices tets seconds_tet seconds_unfold seconds_metrics iterations
 //   peak_rss_mb peak_rss_tetgen_mb E_str_exact E_geo_sources
+// --analyze_only stops after the symbolic analysis of the global matrix and prints
+//   tet_vertices tets seconds_tet seconds_analyze factor_nonzeros factor_gflops peak_rss_mb
 #include <glog/logging.h>
 #include <sys/resource.h>
 
 #include <Eigen/Geometry>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "core/errors.h"
+#include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
+#include "solvers/sparse_ldlt.h"
+#include "tetra/tetrahedralize.h"
 
 namespace unfold {
 namespace {
@@ -43,6 +50,7 @@ int run(int argc, char** argv) {
   std::string input;
   int resolution = 0;
   double divisions = 0;
+  bool analyze_only = false;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
     const size_t eq = arg.find('=');
@@ -54,6 +62,8 @@ int run(int argc, char** argv) {
       resolution = std::stoi(value);
     else if (key == "--volume_divisions")
       divisions = std::stod(value);
+    else if (key == "--analyze_only")
+      analyze_only = true;
     else
       throw UsageError("scale_bench: unknown argument '" + arg + "'");
   }
@@ -64,6 +74,20 @@ int run(int argc, char** argv) {
                                   : read_surface_mesh(input);
   Options options;
   if (divisions > 0) options.tet.max_volume = enclosed_volume(surface) / divisions;
+  if (analyze_only) {
+    TetReport report;
+    const TetMesh tets = tetrahedralize(surface, options.tet, &report);
+    const auto start = std::chrono::steady_clock::now();
+    const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), tets.T);
+    SparseLdlt ldlt;
+    ldlt.analyze(graph_laplacian(graph));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("%d\t%d\t%.3f\t%.3f\t%.0f\t%.2f\t%.0f\n", int(tets.V.rows()), int(tets.T.rows()),
+                report.seconds, seconds, ldlt.factor_nonzeros(), ldlt.factor_flops() / 1e9,
+                peak_rss_mb(RUSAGE_SELF));
+    return 0;
+  }
   const UnfoldResult r = unfold_surface(surface, options);
   std::printf("%d\t%d\t%.3f\t%.3f\t%.3f\t%d\t%.0f\t%.0f\t%d\t%d\n", int(r.tets.V.rows()),
               int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold, r.metrics.seconds,

@@ -2,7 +2,8 @@
 // factorization and one forward/backward solve for each sparse LDL^T backend,
 // one local step, one global step, one local-global iteration, the whole
 // cascade, and the metrics. The mesh is $UNFOLD_BENCH_MESH, else TOSCA wolf0
-// from ../shared/data, else the built-in demo shape.
+// from ../shared/data, else the built-in demo shape; tetrahedralized with the
+// default options and TetGen's volume bound $UNFOLD_BENCH_MAX_VOLUME if set.
 //   build/bin/unfold_bench [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
 #include <glog/logging.h>
@@ -47,7 +48,10 @@ const BenchMesh& bench_mesh() {
       surface = make_articulated_shape(ShapePose::preset(0));
       m.name = "demo shape, preset 0";
     }
-    m.tets = tetrahedralize(surface, TetOptions{});
+    TetOptions tet_options;
+    if (const char* volume = std::getenv("UNFOLD_BENCH_MAX_VOLUME"))
+      tet_options.max_volume = std::atof(volume);
+    m.tets = tetrahedralize(surface, tet_options);
     m.graph = build_edge_graph(int(m.tets.V.rows()), m.tets.T);
     m.beta = 1.5 * m.graph.num_vertices / fiedler_value(graph_laplacian(m.graph));
     std::fprintf(stderr, "bench mesh: %s, %d tet vertices, %d edges\n", m.name.c_str(),

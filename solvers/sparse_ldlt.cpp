@@ -87,6 +87,8 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   if (!m.L || m.common.status < CHOLMOD_OK)
     throw NumericalError("SparseLdlt: symbolic analysis failed (CHOLMOD status " +
                          std::to_string(m.common.status) + ")");
+  factor_nonzeros_ = m.common.lnz;
+  factor_flops_ = m.common.fl;
 }
 
 void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {

@@ -45,11 +45,19 @@ class SparseLdlt {
 
   Backend backend() const { return backend_; }
 
+  /// Nonzeros of the factor L and flops of one numeric factorization, as
+  /// predicted by the analysis (CHOLMOD backend; 0 for Eigen's): the fill-in
+  /// that makes a direct solver superlinear on 3D meshes.
+  double factor_nonzeros() const { return factor_nonzeros_; }
+  double factor_flops() const { return factor_flops_; }
+
  private:
   struct Impl;
   Backend backend_;
   std::unique_ptr<Impl> impl_;
   int negative_pivots_ = 0;
+  double factor_nonzeros_ = 0;
+  double factor_flops_ = 0;
 };
 
 }  // namespace unfold
