@@ -28,6 +28,7 @@ CascadeResult run_cascade(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
                           const CascadeOptions& options) {
   const Eigen::MatrixX3d& P = rest;
   CascadeResult result;
+  result.history.reserve(size_t(options.k_iter) * size_t(options.num_cascades));
   LocalGlobalData data;
   local_global_precomputation(graph, P, &data);
   double beta = options.beta;
