@@ -82,7 +82,7 @@ void expect_same_as_reference(const SurfaceMesh& surface) {
 }
 
 TEST(SolverIdentity, DemoShapeMatchesReferenceImplementation) {
-  expect_same_as_reference(make_articulated_shape(ShapePose::preset(0)));
+  expect_same_as_reference(make_articulated_shape(ShapePose::preset(0), 32));
 }
 
 TEST(SolverIdentity, Wolf0MatchesReferenceImplementation) {
