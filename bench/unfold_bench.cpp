@@ -1,11 +1,14 @@
-// Timings of the solver's parts on one tet mesh: numeric factorization, one
-// forward/backward solve, one local step, one local-global iteration, the whole
+// Timings of the solver's parts on one tet mesh: symbolic analysis, numeric
+// factorization and one forward/backward solve for each sparse LDL^T backend,
+// one local step, one global step, one local-global iteration, the whole
 // cascade, and the metrics. The mesh is $UNFOLD_BENCH_MESH, else TOSCA wolf0
-// from ../shared/data, else the built-in demo shape.
+// from ../shared/data, else the built-in demo shape; tetrahedralized with the
+// default options and TetGen's volume bound $UNFOLD_BENCH_MAX_VOLUME if set.
 //   build/bin/unfold_bench [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
 #include <glog/logging.h>
 
+#include <Eigen/Geometry>
 #include <cstdio>
 #include <cstdlib>
 
@@ -19,6 +22,7 @@
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
 #include "solvers/unfold_problem.h"
+#include "solvers/sparse_ldlt.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -46,7 +50,10 @@ const BenchMesh& bench_mesh() {
       surface = make_articulated_shape(ShapePose::preset(0));
       m.name = "demo shape, preset 0";
     }
-    m.tets = tetrahedralize(surface, TetOptions{});
+    TetOptions tet_options;
+    if (const char* volume = std::getenv("UNFOLD_BENCH_MAX_VOLUME"))
+      tet_options.max_volume = std::atof(volume);
+    m.tets = tetrahedralize(surface, tet_options);
     m.graph = build_edge_graph(int(m.tets.V.rows()), m.tets.T);
     m.problem.graph = &m.graph;
     m.problem.rest = m.tets.V;
@@ -69,49 +76,72 @@ struct SolverState {
     local_global_set_beta(m.beta, &data);
     Q = m.tets.V;
     for (int k = 0; k < 3; ++k) {
-      best_rotations(m.graph, m.tets.V, Q, &R);
+      fit_rotations(m.problem, Q, m.beta, &R);
       global_step(data, R, &Q);
     }
   }
 };
 
+// Backends of the sparse LDL^T, compared on (beta+1) L - n I (argument: 0 Eigen, 1 CHOLMOD).
+SparseLdlt::Backend backend_arg(const benchmark::State& state) {
+  return state.range(0) == 0 ? SparseLdlt::Backend::kEigen : SparseLdlt::Backend::kCholmod;
+}
+
+Eigen::SparseMatrix<double> global_matrix(const BenchMesh& m) {
+  Eigen::SparseMatrix<double> A = (m.beta + 1.0) * graph_laplacian(m.graph);
+  A.diagonal().array() -= double(m.graph.num_vertices);
+  return A;
+}
+
 void BM_SymbolicAnalysis(benchmark::State& state) {
-  const BenchMesh& m = bench_mesh();
+  const Eigen::SparseMatrix<double> A = global_matrix(bench_mesh());
   for (auto _ : state) {
-    LocalGlobalData data;
-    local_global_precomputation(m.problem, &data);
-    benchmark::DoNotOptimize(data.A_beta.nonZeros());
+    SparseLdlt ldlt(backend_arg(state));
+    ldlt.analyze(A);
   }
 }
-BENCHMARK(BM_SymbolicAnalysis)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SymbolicAnalysis)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_NumericFactorization(benchmark::State& state) {
-  const BenchMesh& m = bench_mesh();
-  LocalGlobalData data;
-  local_global_precomputation(m.problem, &data);
-  for (auto _ : state) local_global_set_beta(m.beta, &data);
+  const Eigen::SparseMatrix<double> A = global_matrix(bench_mesh());
+  SparseLdlt ldlt(backend_arg(state));
+  ldlt.analyze(A);
+  for (auto _ : state) ldlt.factorize(A);
+  state.counters["negative_pivots"] = ldlt.negative_pivots();
 }
-BENCHMARK(BM_NumericFactorization)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NumericFactorization)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_Solve(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
+  const Eigen::SparseMatrix<double> A = global_matrix(m);
+  SparseLdlt ldlt(backend_arg(state));
+  ldlt.analyze(A);
+  ldlt.factorize(A);
   SolverState s(m);
-  for (auto _ : state) benchmark::DoNotOptimize(s.data.ldlt.solve(s.Q).eval());
+  Eigen::MatrixX3d x;
+  for (auto _ : state) ldlt.solve(s.data.rhs, &x);
 }
-BENCHMARK(BM_Solve)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Solve)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_LocalStep(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
   SolverState s(m);
-  for (auto _ : state) best_rotations(m.graph, m.tets.V, s.Q, &s.R);
+  for (auto _ : state) fit_rotations(m.problem, s.Q, m.beta, &s.R);
 }
 BENCHMARK(BM_LocalStep)->Unit(benchmark::kMillisecond);
+
+void BM_GlobalStep(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  SolverState s(m);
+  for (auto _ : state) global_step(s.data, s.R, &s.Q);
+}
+BENCHMARK(BM_GlobalStep)->Unit(benchmark::kMillisecond);
 
 void BM_Iteration(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
   SolverState s(m);
   for (auto _ : state) {
-    best_rotations(m.graph, m.tets.V, s.Q, &s.R);
+    fit_rotations(m.problem, s.Q, m.beta, &s.R);
     global_step(s.data, s.R, &s.Q);
   }
 }
@@ -129,6 +159,37 @@ void BM_Cascade(benchmark::State& state) {
   state.counters["iterations"] = iterations;
 }
 BENCHMARK(BM_Cascade)->Unit(benchmark::kMillisecond);
+
+// The metrics on the bench mesh's rest pose against a rotated, scaled copy
+// (the cost does not depend on the shape), with the default options.
+Eigen::MatrixX3d moved(const BenchMesh& m) {
+  return 1.1 * m.tets.V * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+void BM_RigidityError(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const Eigen::MatrixX3d Q = moved(m);
+  for (auto _ : state) benchmark::DoNotOptimize(rigidity_error(m.graph, m.tets.V, Q).mean);
+}
+BENCHMARK(BM_RigidityError)->Unit(benchmark::kMillisecond);
+
+void BM_StretchError(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const Eigen::MatrixX3d Q = moved(m);
+  StretchError e;
+  for (auto _ : state) e = stretch_error(m.tets.V, Q);
+  state.counters["exact"] = e.exact;
+}
+BENCHMARK(BM_StretchError)->Unit(benchmark::kMillisecond);
+
+void BM_GeodesicError(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const Eigen::MatrixX3d Q = moved(m);
+  GeodesicError e;
+  for (auto _ : state) e = geodesic_error(m.graph, m.tets.V, Q);
+  state.counters["sources"] = e.sources_used;
+}
+BENCHMARK(BM_GeodesicError)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace unfold

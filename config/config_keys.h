@@ -13,6 +13,8 @@
     "tetrahedralization route: auto (conforming, else robust), conforming, robust")            \
   X(tet_quality, "tetrahedralize.quality", tet.quality,                                        \
     "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                   \
+  X(tet_max_volume, "tetrahedralize.max_volume", tet.max_volume,                               \
+    "TetGen bound on tetrahedron volume (-a), mesh units cubed; 0: no bound")                  \
   X(beta_mode, "beta.mode", beta_mode,                                                         \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                        \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                           \

@@ -170,6 +170,8 @@ void validate_options(const Options& o) {
           "must be auto, conforming or robust, got '" + o.tet.route + "'");
   require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),
           "tetrahedralize.quality", "must be 0 (off) or a finite number >= 1");
+  require(std::isfinite(o.tet.max_volume) && o.tet.max_volume >= 0, "tetrahedralize.max_volume",
+          "must be 0 (no bound) or a positive finite number");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

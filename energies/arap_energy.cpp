@@ -7,7 +7,18 @@ namespace unfold {
 
 ArapEnergy::ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
                        std::vector<double> edge_weights, double weight)
-    : EnergyTerm(weight, true), graph_(graph), rest_(rest), weights_(std::move(edge_weights)) {}
+    : EnergyTerm(weight, true),
+      graph_(graph),
+      rest_(rest),
+      weights_(std::move(edge_weights)),
+      weighted_laplacian_rest_(Eigen::MatrixX3d::Zero(rest.rows(), 3)) {
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    const int i = graph.edges(e, 0), j = graph.edges(e, 1);
+    const Eigen::RowVector3d d = weights_[size_t(e)] * (rest.row(i) - rest.row(j));
+    weighted_laplacian_rest_.row(i) += d;
+    weighted_laplacian_rest_.row(j) -= d;
+  }
+}
 
 double ArapEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
                             Eigen::MatrixX3d* grad) const {

@@ -55,6 +55,7 @@ class ArapEnergy : public EnergyTerm {
   const EdgeGraph& graph_;
   Eigen::MatrixX3d rest_;
   std::vector<double> weights_;
+  Eigen::MatrixX3d weighted_laplacian_rest_;  ///< (L_w P)_i = sum_j w_ij (p_i - p_j)
 };
 
 }  // namespace unfold

@@ -10,6 +10,16 @@
 #include "metrics/graph_geodesics.h"
 
 namespace unfold {
+namespace {
+
+// E_geo from the sums of D'^2, G^2 and D'G over the rows used:
+// |a/|a| - b/|b||^2 = 2 - 2 <a, b> / (|a| |b|).
+double value_from_sums(const Eigen::Vector3d& sums) {
+  const double cosine = sums[2] / std::sqrt(sums[0] * sums[1]);
+  return std::sqrt(std::max(0.0, 2 - 2 * cosine));
+}
+
+}  // namespace
 
 GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                              const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options) {
@@ -54,9 +64,19 @@ GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
   for (const Eigen::Vector3d& sums : row) total += sums;
   if (total[0] == 0 || total[1] == 0)
     throw InputError("geodesic_error: all points coincide, distances cannot be normalised");
-  // |a/|a| - b/|b||^2 = 2 - 2 <a, b> / (|a| |b|).
-  const double cosine = total[2] / std::sqrt(total[0] * total[1]);
-  result.value = std::sqrt(std::max(0.0, 2 - 2 * cosine));
+  result.value = value_from_sums(total);
+  if (!result.exact && row.size() > 1) {
+    // Delete-one jackknife over the landmark rows: the estimator is a smooth
+    // function of three row means, so this is its usual standard error.
+    const double k = double(row.size());
+    std::vector<double> loo(row.size());
+    double mean = 0;
+    for (size_t s = 0; s < row.size(); ++s) mean += loo[s] = value_from_sums(total - row[s]);
+    mean /= k;
+    double squares = 0;
+    for (double v : loo) squares += (v - mean) * (v - mean);
+    result.standard_error = std::sqrt((k - 1) / k * squares);
+  }
   return result;
 }
 

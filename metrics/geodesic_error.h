@@ -16,9 +16,10 @@ struct GeodesicErrorOptions {
 };
 
 struct GeodesicError {
-  double value = 0;      ///< E_geo (or its estimate)
-  bool exact = false;    ///< true: every vertex was a source
-  int sources_used = 0;  ///< rows of D' and G used
+  double value = 0;           ///< E_geo (or its estimate)
+  bool exact = false;         ///< true: every vertex was a source
+  int sources_used = 0;       ///< rows of D' and G used
+  double standard_error = 0;  ///< delete-one jackknife over the sources; 0 when exact
 };
 
 /// E_geo = || D'/||D'||_F - G/||G||_F ||_F with D'_ij = |q_i - q_j| and G_ij the
@@ -26,9 +27,9 @@ struct GeodesicError {
 /// (graph_geodesics()). Exact over all rows when n <= exact_limit; otherwise the
 /// same formula over the rows of `sources` distinct vertices drawn uniformly
 /// at random with a fixed seed (a row sample scales both norms alike, so the
-/// normalisation cancels it). Parallel over sources, deterministic. Invariant
-/// to rigid motions and uniform scaling of Q. Accurate to about 1e-8 near 0
-/// (computed as sqrt(2 - 2 <D', G> / (|D'| |G|))).
+/// normalisation cancels it), with its jackknife standard error. Parallel over sources,
+/// deterministic. Invariant to rigid motions and uniform scaling of Q. Accurate to about 1e-8 near
+/// 0 (computed as sqrt(2 - 2 <D', G> / (|D'| |G|))).
 /// @param P rest positions (n x 3), n >= 2, graph connected
 /// @param Q deformed positions (n x 3)
 /// @throws UsageError on mismatched sizes, n < 2, exact_limit < 0 or sources < 1

@@ -12,7 +12,9 @@ namespace unfold {
 using Rotations = std::vector<Eigen::Matrix3d>;
 
 /// The rotation R minimising sum_k |target_k - R source_k|^2 (Kabsch), with
-/// det(R) = +1 enforced by flipping the weakest singular direction.
+/// det(R) = +1 enforced by flipping the weakest singular direction. Computed as
+/// the polar factor of cov^T by scaled Newton iteration when det(cov) is clearly
+/// positive, else by a Jacobi SVD; both agree to roundoff.
 /// @param cov sum_k source_k target_k^T (3x3 covariance).
 Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov);
 

@@ -30,7 +30,9 @@ void assemble_quadratic_part(const UnfoldProblem& problem, LocalGlobalData* data
   data->problem = &problem;
   data->A_fixed = assemble(problem, false);
   data->A_beta = assemble(problem, true);
-  data->ldlt.analyzePattern(data->A_fixed + data->A_beta);
+  data->A = data->A_fixed;
+  data->ldlt.analyze(data->A);
+  data->rhs.resize(problem.num_vertices(), 3);
   data->beta = 0;
 }
 
@@ -53,17 +55,27 @@ bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
 }
 
 void local_global_set_beta(double beta, LocalGlobalData* data) {
-  data->ldlt.factorize(data->A_fixed + beta * data->A_beta);
-  if (data->ldlt.info() != Eigen::Success)
-    throw NumericalError("factorizing the global matrix failed at beta = " + std::to_string(beta));
+  // A_fixed, A_beta and A share one pattern (assemble keeps explicit zeros):
+  // only the values change.
+  const auto values = [](Eigen::SparseMatrix<double>& M) {
+    return Eigen::Map<Eigen::VectorXd>(M.valuePtr(), M.nonZeros());
+  };
+  values(data->A) = values(data->A_fixed) + beta * values(data->A_beta);
+  try {
+    data->ldlt.factorize(data->A);
+  } catch (const NumericalError& e) {
+    throw NumericalError("factorizing the global matrix failed at beta = " + std::to_string(beta) +
+                         ": " + e.what());
+  }
   data->beta = beta;
-  data->negative_pivots = int((data->ldlt.vectorD().array() < 0).count());
+  data->negative_pivots = data->ldlt.negative_pivots();
 }
 
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q) {
-  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(data.problem->num_vertices(), 3);
-  for (const auto& term : data.problem->terms) term->add_linear(R, term->weight(data.beta), &rhs);
-  *Q = data.ldlt.solve(rhs);
+  data.rhs.setZero();
+  for (const auto& term : data.problem->terms)
+    term->add_linear(R, term->weight(data.beta), &data.rhs);
+  data.ldlt.solve(data.rhs, Q);
   // Every B_t sums to zero, so Q has zero mean up to roundoff; remove that too.
   Q->rowwise() -= Q->colwise().mean();
 }

@@ -10,9 +10,10 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include "solvers/cascade.h"
+#include "solvers/sparse_ldlt.h"
 #include "solvers/unfold_problem.h"
 
 namespace unfold {
@@ -21,9 +22,11 @@ struct LocalGlobalData {
   const UnfoldProblem* problem = nullptr;
   Eigen::SparseMatrix<double> A_fixed;  ///< sum of w_t H_t over terms not scaled by beta
   Eigen::SparseMatrix<double> A_beta;   ///< the same at beta = 1 over terms scaled by beta
+  Eigen::SparseMatrix<double> A;        ///< A_fixed + beta A_beta: one pattern, refilled per beta
   double beta = 0;                      ///< beta of the current factorization
   int negative_pivots = 0;              ///< inertia of A: 1 iff the energy is bounded
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  SparseLdlt ldlt;                      ///< analyzed once, factorized per beta
+  mutable Eigen::MatrixX3d rhs;         ///< global_step's right-hand side buffer, reused
 };
 
 /// Assembles the system's two parts and does the symbolic factorization.
@@ -44,6 +47,8 @@ inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_p
 bool quadratic_part_bounded(const UnfoldProblem& problem, double beta);
 
 /// Global step: the zero-mean minimiser over Q for fixed rotations R.
+/// No allocation once Q has n rows; uses data's buffers, so one `data` must
+/// not serve two global steps at the same time.
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q);
 
 /// Algorithm 1's iterations for the cascade driver (solvers/cascade.h).

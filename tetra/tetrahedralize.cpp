@@ -15,14 +15,14 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   r = TetReport();
   TetMesh tets;
   if (options.route == "conforming") {
-    tets = tetrahedralize_conforming(surface, options.quality);
+    tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
     r.route = "conforming";
   } else if (options.route == "robust") {
     tets = tetrahedralize_robust(surface, &r);
     r.route = "robust";
   } else if (options.route == "auto") {
     try {
-      tets = tetrahedralize_conforming(surface, options.quality);
+      tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
       r.route = "conforming";
     } catch (const NumericalError& e) {
       r.fallback = e.what();

@@ -16,6 +16,7 @@ struct TetOptions {
   /// "auto": conforming, and robust when conforming fails.
   std::string route = "auto";
   double quality = 2.0;  ///< TetGen -q radius-edge bound (conforming route); 0 turns it off
+  double max_volume = 0;  ///< TetGen -a bound on tet volume (conforming route); 0: no bound
 };
 
 struct TetReport {
@@ -39,8 +40,10 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
                        TetReport* report = nullptr);
 
 /// TetGen in boundary-conforming mode with no Steiner points on the surface
-/// (switches -pYq). Needs a clean piecewise-linear complex: no self-intersections.
-TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality);
+/// (switches -pYq, and -a when max_volume > 0: more interior points, for scale
+/// tests). Needs a clean piecewise-linear complex: no self-intersections.
+TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality,
+                                  double max_volume = 0);
 
 /// Delaunay tetrahedralization (TetGen point mode) of the surface vertices and
 /// interior grid points (spacing three times the mean edge length), keeping the tets

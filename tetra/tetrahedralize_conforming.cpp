@@ -7,7 +7,7 @@
 
 namespace unfold {
 
-TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality) {
+TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality, double max_volume) {
   const int n = int(surface.V.rows());
   tetgenio in;
   in.firstnumber = 0;
@@ -33,6 +33,7 @@ TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality) {
   std::ostringstream switches;
   switches << "pYzQ";
   if (quality > 0) switches << "q" << quality;
+  if (max_volume > 0) switches << "a" << max_volume;
   TetgenOutput out = run_tetgen(switches.str(), in, "tetrahedralization (conforming route)");
   if (out.points.rows() < n || out.tets.rows() == 0)
     throw NumericalError("TetGen (conforming route) produced no usable tetrahedra");

@@ -1,0 +1,148 @@
+#include "solvers/sparse_ldlt.h"
+
+#include <cholmod.h>
+
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <string>
+
+#include "core/errors.h"
+
+namespace unfold {
+
+struct SparseLdlt::Impl {
+  // Eigen backend.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> eigen;
+  // CHOLMOD backend: A's lower triangle in CHOLMOD's CSC, kept so that each
+  // factorization only copies values; X/Y/E are cholmod_solve2's reusable workspace.
+  cholmod_common common;
+  cholmod_sparse* A = nullptr;
+  cholmod_factor* L = nullptr;
+  cholmod_dense* X = nullptr;
+  cholmod_dense* Y = nullptr;
+  cholmod_dense* E = nullptr;
+  bool cholmod_started = false;
+  int n = -1;
+
+  ~Impl() {
+    if (!cholmod_started) return;
+    cholmod_free_dense(&X, &common);
+    cholmod_free_dense(&Y, &common);
+    cholmod_free_dense(&E, &common);
+    cholmod_free_factor(&L, &common);
+    cholmod_free_sparse(&A, &common);
+    cholmod_finish(&common);
+  }
+
+  // Copies the lower triangle of M's values (pattern fixed by analyze) into A.
+  void copy_lower_values(const Eigen::SparseMatrix<double>& M) {
+    double* x = static_cast<double*>(A->x);
+    size_t k = 0;
+    for (int j = 0; j < M.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it)
+        if (it.row() >= j) x[k++] = it.value();
+  }
+};
+
+SparseLdlt::SparseLdlt(Backend backend) : backend_(backend), impl_(new Impl) {
+  if (backend_ == Backend::kCholmod) {
+    cholmod_start(&impl_->common);
+    impl_->cholmod_started = true;
+    impl_->common.supernodal = CHOLMOD_SIMPLICIAL;  // supernodal is LL^T only: A is indefinite
+    impl_->common.final_ll = false;                 // keep LDL^T
+  }
+}
+
+SparseLdlt::~SparseLdlt() = default;
+
+void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
+  if (A.rows() != A.cols()) throw UsageError("SparseLdlt::analyze: matrix is not square");
+  Impl& m = *impl_;
+  m.n = int(A.rows());
+  if (backend_ == Backend::kEigen) {
+    m.eigen.analyzePattern(A);
+    if (m.eigen.info() != Eigen::Success)
+      throw NumericalError("SparseLdlt: symbolic analysis failed (Eigen backend)");
+    return;
+  }
+  cholmod_free_factor(&m.L, &m.common);
+  cholmod_free_sparse(&m.A, &m.common);
+  size_t nnz = 0;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) nnz += it.row() >= j;
+  m.A = cholmod_allocate_sparse(size_t(m.n), size_t(m.n), nnz, /*sorted=*/1, /*packed=*/1,
+                                /*stype=*/-1, CHOLMOD_REAL, &m.common);
+  if (!m.A) throw NumericalError("SparseLdlt: CHOLMOD could not allocate the matrix");
+  int* p = static_cast<int*>(m.A->p);
+  int* i = static_cast<int*>(m.A->i);
+  size_t k = 0;
+  for (int j = 0; j < A.outerSize(); ++j) {
+    p[j] = int(k);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (it.row() >= j) i[k++] = int(it.row());
+  }
+  p[m.n] = int(k);
+  m.copy_lower_values(A);
+  m.L = cholmod_analyze(m.A, &m.common);
+  if (!m.L || m.common.status < CHOLMOD_OK)
+    throw NumericalError("SparseLdlt: symbolic analysis failed (CHOLMOD status " +
+                         std::to_string(m.common.status) + ")");
+  factor_nonzeros_ = m.common.lnz;
+  factor_flops_ = m.common.fl;
+}
+
+void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
+  Impl& m = *impl_;
+  if (m.n < 0 || A.rows() != m.n || A.cols() != m.n)
+    throw UsageError("SparseLdlt::factorize: call analyze() first with a matrix of this size");
+  negative_pivots_ = 0;
+  if (backend_ == Backend::kEigen) {
+    m.eigen.factorize(A);
+    if (m.eigen.info() != Eigen::Success)
+      throw NumericalError("SparseLdlt: numeric factorization failed (Eigen backend)");
+    const Eigen::VectorXd& D = m.eigen.vectorD();
+    if (!D.allFinite() || (D.array() == 0).any())
+      throw NumericalError("SparseLdlt: zero or non-finite pivot (Eigen backend)");
+    negative_pivots_ = int((D.array() < 0).count());
+    return;
+  }
+  m.copy_lower_values(A);
+  // CHOLMOD's LDL^T does not stop at negative pivots; a zero one sets L->minor < n.
+  if (!cholmod_factorize(m.A, m.L, &m.common) || m.L->minor < m.L->n)
+    throw NumericalError("SparseLdlt: numeric factorization failed (CHOLMOD status " +
+                         std::to_string(m.common.status) + ", column " +
+                         std::to_string(m.L->minor) + ")");
+  // Simplicial LDL^T stores D on L's diagonal: the first entry of each column.
+  const int* p = static_cast<const int*>(m.L->p);
+  const double* x = static_cast<const double*>(m.L->x);
+  for (int j = 0; j < m.n; ++j) {
+    const double d = x[p[j]];
+    if (!std::isfinite(d) || d == 0)
+      throw NumericalError("SparseLdlt: zero or non-finite pivot at column " + std::to_string(j));
+    negative_pivots_ += d < 0;
+  }
+}
+
+void SparseLdlt::solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const {
+  Impl& m = *impl_;
+  if (b.rows() != m.n) throw UsageError("SparseLdlt::solve: right-hand side has the wrong size");
+  if (backend_ == Backend::kEigen) {
+    *x = m.eigen.solve(b);
+    return;
+  }
+  cholmod_dense B;  // a view of b: CHOLMOD only reads it
+  B.nrow = size_t(m.n);
+  B.ncol = 3;
+  B.nzmax = B.nrow * 3;
+  B.d = B.nrow;
+  B.x = const_cast<double*>(b.data());
+  B.z = nullptr;
+  B.xtype = CHOLMOD_REAL;
+  B.dtype = CHOLMOD_DOUBLE;
+  if (!cholmod_solve2(CHOLMOD_A, m.L, &B, nullptr, &m.X, nullptr, &m.Y, &m.E, &m.common))
+    throw NumericalError("SparseLdlt: CHOLMOD solve failed (status " +
+                         std::to_string(m.common.status) + ")");
+  *x = Eigen::Map<const Eigen::MatrixX3d>(static_cast<const double*>(m.X->x), m.n, 3);
+}
+
+}  // namespace unfold
