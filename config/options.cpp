@@ -41,6 +41,12 @@ void parse_into(const YAML::Node& node, const std::string& key, double* value) {
     throw UsageError("config key '" + key + "' must be a number, got '" + describe(node) + "'");
 }
 
+void parse_into(const YAML::Node& node, const std::string& key, bool* value) {
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, *value))
+    throw UsageError("config key '" + key + "' must be true or false, got '" + describe(node) +
+                     "'");
+}
+
 void parse_into(const YAML::Node& node, const std::string& key, std::string* value) {
   if (!node.IsScalar())
     throw UsageError("config key '" + key + "' must be a string, got '" + describe(node) + "'");
@@ -54,6 +60,7 @@ void parse_into(const YAML::Node& node, const std::string& key, std::array<doubl
   for (size_t k = 0; k < 2; ++k) parse_into(node[k], key, &(*value)[k]);
 }
 
+YAML::Node to_node(bool value) { return YAML::Node(value); }
 YAML::Node to_node(int value) { return YAML::Node(value); }
 YAML::Node to_node(int64_t value) { return YAML::Node(value); }
 YAML::Node to_node(const std::string& value) { return YAML::Node(value); }
@@ -163,6 +170,8 @@ void validate_options(const Options& o) {
           "must be conforming, got '" + o.tet.route + "'");
   require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),
           "tetrahedralize.quality", "must be 0 (off) or a finite number >= 1");
+  require(o.components == "refuse" || o.components == "separately", "components",
+          "must be refuse or separately, got '" + o.components + "'");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

@@ -11,6 +11,7 @@
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
+#include "pipeline/unfold_components.h"
 #include "solvers/fiedler_value.h"
 
 namespace unfold {
@@ -32,16 +33,47 @@ void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {
                            std::to_string(graph.edges(e, 1)) + " has zero length");
 }
 
+// The tet mesh of a closed surface; when none can be made (open surface,
+// tetrahedralization failed) and the options allow it, the surface alone: a
+// TetMesh without tets, whose edge graph is then the triangles'.
+TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const Options& options,
+                                    TetReport* report, std::vector<std::string>* warnings) {
+  std::string reason = "the surface is open";
+  if (!open) {
+    try {
+      return tetrahedralize(surface, options.tet, report);
+    } catch (const NumericalError& e) {
+      if (!options.fallback_surface_graph)
+        throw NumericalError(std::string(e.what()) +
+                             " (tetrahedralize.fallback_surface_graph: true unfolds the surface "
+                             "edge graph instead)");
+      reason = e.what();
+    }
+  }
+  warnings->push_back("no tet mesh (" + reason + "): unfolding on the surface edge graph");
+  LOG(WARNING) << warnings->back();
+  TetMesh surface_only;
+  surface_only.V = surface.V;
+  surface_only.T.resize(0, 4);
+  surface_only.num_surface_vertices = int(surface.V.rows());
+  *report = TetReport{"surface_graph", 0, 0, 0};
+  return surface_only;
+}
+
 }  // namespace
 
 UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   validate_options(options);
   UnfoldResult result;
-  const SurfaceReport report = check_surface_mesh(input);
-  // A tet mesh needs a closed surface: holes are fatal, the rest is tolerated.
-  if (report.num_boundary_edges > 0)
+  const SurfaceReport report = check_surface_mesh(input, options.components == "refuse");
+  if (report.num_components > 1) return unfold_components_separately(input, options);
+  // A tet mesh needs a closed surface: holes are fatal unless the surface
+  // graph may stand in for it; the rest is tolerated.
+  const bool open = report.num_boundary_edges > 0;
+  if (open && !options.fallback_surface_graph)
     throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
-                     " boundary edges); unfold needs a closed surface");
+                     " boundary edges); unfold needs a closed surface (or "
+                     "tetrahedralize.fallback_surface_graph: true)");
   result.warnings = report.warnings;
   for (const auto& w : report.warnings) LOG(WARNING) << w;
 
@@ -54,20 +86,35 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
     result.surface = input;
   }
 
-  result.tets = tetrahedralize(result.surface, options.tet, &result.tet_report);
+  result.tets = tetrahedralize_or_fall_back(result.surface, open, options, &result.tet_report,
+                                            &result.warnings);
   LOG(INFO) << "tetrahedralized (" << result.tet_report.route << "): " << result.tets.V.rows()
             << " vertices, " << result.tets.T.rows() << " tets in " << result.tet_report.seconds
             << " s";
 
   const auto start = std::chrono::steady_clock::now();
-  const EdgeGraph graph = build_edge_graph(int(result.tets.V.rows()), result.tets.T);
+  const EdgeGraph graph = build_edge_graph(
+      int(result.tets.V.rows()), result.tets.T.rows() > 0
+                                     ? Eigen::MatrixXi(result.tets.T)
+                                     : Eigen::MatrixXi(triangulate_faces(result.surface)));
   check_tet_graph(graph, result.tets.V);
   result.num_edges = graph.num_edges();
   const int n = graph.num_vertices;
   result.lambda2 = fiedler_value(graph_laplacian(graph));
   const double bound = n / result.lambda2;
-  result.beta_start =
+  result.beta_requested =
       options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
+  result.beta_start = result.beta_requested;
+  // (beta + 1) lambda_2 > n keeps the energy bounded (docs/method.md); 1% above
+  // the bound leaves room for the error in lambda_2.
+  if (options.raise_beta_to_bound && result.beta_start <= bound - 1) {
+    result.beta_start = 1.01 * bound - 1;
+    result.beta_raised = true;
+    result.warnings.push_back("beta " + std::to_string(result.beta_requested) +
+                              " is below the bound n/lambda_2 - 1 = " + std::to_string(bound - 1) +
+                              ": raised to " + std::to_string(result.beta_start));
+    LOG(WARNING) << result.warnings.back();
+  }
   LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << result.lambda2
             << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start;
   CascadeOptions cascade = options.cascade;

@@ -30,18 +30,26 @@ struct UnfoldResult {
   TetReport tet_report;
   int num_edges = 0;
   double lambda2 = 0;
-  double beta_start = 0;
+  double beta_requested = 0;  ///< starting beta from the options (beta.mode, beta.value)
+  double beta_start = 0;      ///< starting beta used: beta_requested, or raised above the bound
+  bool beta_raised = false;   ///< beta_requested was below n/lambda_2 - 1 and was raised
   CascadeResult cascade;
   UnfoldMetrics metrics;
   double seconds_unfold = 0;  ///< lambda_2 and the cascade
   std::vector<std::string> warnings;
 };
 
-/// Unfolds a surface into its canonical pose.
+/// Unfolds a surface into its canonical pose. With options.components ==
+/// "separately" a surface of several components is unfolded one component at
+/// a time (see unfold_components_separately). With
+/// options.fallback_surface_graph, an open surface or one that cannot be
+/// tetrahedralized is unfolded on its own edge graph (tets.T empty, route
+/// "surface_graph", a warning).
 /// @param surface  the input surface, as read (it is checked here)
 /// @param options  validated options (load_options)
 /// @throws InputError for a surface that fails the checks, NumericalError when
-///         tetrahedralization or the solve fails, UsageError for bad options
+///         tetrahedralization (without the fallback) or the solve fails,
+///         UsageError for bad options
 UnfoldResult unfold_surface(const SurfaceMesh& surface, const Options& options);
 
 }  // namespace unfold
