@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "core/errors.h"
 #include "energies/unfold_energy.h"
@@ -42,9 +43,12 @@ CascadeResult run_cascade(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
     best_rotations(graph, P, Q, &R);
     global_step(data, R, &Q);
     ++total;
-    if (!Q.allFinite())
-      throw NumericalError("non-finite positions at iteration " + std::to_string(total) +
-                           " (beta = " + std::to_string(beta) + ")");
+    if (!Q.allFinite()) {
+      std::ostringstream what;
+      what << "non-finite positions at iteration " << total << " (cascade " << j
+           << ", beta = " << beta << ")";
+      throw NumericalError(what.str());
+    }
     const double delta = edge_ratio(graph, P, Q);
     const double f_e = unfold_energy(graph, P, Q, R, beta);
     result.history.push_back({total, j, beta, f_e, delta});

@@ -36,8 +36,10 @@ void local_global_precomputation(const EdgeGraph& graph, const Eigen::MatrixX3d&
 void local_global_set_beta(double beta, LocalGlobalData* data);
 
 /// True when (beta+1) lambda_2 > n, i.e. the quadratic part is positive
-/// definite off the constant vector and the global step is a minimiser.
-inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_pivots == 1; }
+/// definite off the constant vector and the global step is a minimiser. The
+/// one negative direction (the constant vector, eigenvalue -n) can vanish in
+/// rounding when beta is huge, so no negative pivot counts as bounded too.
+inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_pivots <= 1; }
 
 /// Global step: the zero-mean minimiser of Eq. 3 over Q for fixed rotations R.
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q);

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,9 @@ struct BadInput {
   int code;                           ///< expected exit code
   std::string words;                  ///< expected in stderr
 };
+
+// gtest prints the case by name instead of its bytes.
+void PrintTo(const BadInput& c, std::ostream* out) { *out << c.name; }
 
 std::function<std::string()> input(const std::string& file, const std::string& extra = "") {
   return [=] { return "--input " + corpus(file) + (extra.empty() ? "" : " " + extra); };
@@ -166,6 +170,9 @@ const std::vector<BadInput>& cases() {
       {"three_vertices", input("three_vertices.off"), 3, "the surface is open"},
       {"two_components", input("two_components.off"), 3, "2 connected components"},
       {"self_intersecting", input("self_intersecting.off"), 4, "TetGen gave up"},
+      {"overflowing_beta",
+       input("open_surface.off", "--fallback_surface_graph true --beta_mode absolute --beta 1e308"),
+       4, "non-finite positions at iteration 1"},
       // Bad configuration files and flags.
       {"config_missing", flags("--config /nonexistent/c.yaml"), 2, "/nonexistent/c.yaml"},
       {"config_invalid_yaml", config("invalid_yaml.yaml"), 2, "invalid YAML"},
