@@ -103,6 +103,9 @@ const KeyBinding* find_binding(const std::string& path) {
 void for_each_leaf(const YAML::Node& node, const std::string& prefix,
                    const std::function<void(const std::string&, const YAML::Node&)>& visit) {
   for (const auto& item : node) {
+    if (!item.first.IsScalar())
+      throw UsageError("config key '" + describe(item.first) + "'" +
+                       (prefix.empty() ? "" : " under '" + prefix + "'") + " is not a plain name");
     const std::string path =
         prefix.empty() ? item.first.as<std::string>() : prefix + "." + item.first.as<std::string>();
     if (item.second.IsMap())

@@ -177,6 +177,7 @@ const std::vector<BadInput>& cases() {
       {"config_missing", flags("--config /nonexistent/c.yaml"), 2, "/nonexistent/c.yaml"},
       {"config_invalid_yaml", config("invalid_yaml.yaml"), 2, "invalid YAML"},
       {"config_not_a_mapping", config("not_a_mapping.yaml"), 2, "is not a mapping"},
+      {"config_complex_key", config("complex_key.yaml"), 2, "is not a plain name"},
       {"config_unknown_key", config("unknown_key.yaml"), 2, "unknown config key 'cascade.kiter'"},
       {"config_mistyped_value", config("mistyped_value.yaml"), 2,
        "'cascade.k_iter' must be an integer"},
