@@ -150,6 +150,8 @@ const std::vector<BadInput>& cases() {
                                                    float_triple(0, 0, 0) + float_triple(1, 0, 0));
        },
        3, "truncated"},
+      {"off_binary_corrupt_face_size", input("binary_bad_face_count.off"), 3,
+       "bad vertex count"},  // found by fuzzing: OpenMesh allocated 8 GB
       // Huge declared counts with little data: refused before allocating.
       {"off_huge_counts", input("huge_counts.off"), 3, "declares 2000000000 vertices"},
       {"ply_huge_counts", input("huge_counts.ply"), 3, "declares 1000000000 vertices"},
