@@ -52,6 +52,15 @@ SurfaceMesh sphere_with_hole() {
   return mesh;
 }
 
+// The metrics JSON write_metrics_json produces for r.
+std::string metrics_json_text(const UnfoldResult& r, const Options& options) {
+  const test::TempDir dir;
+  write_metrics_json(dir.file("m.json"), r, options);
+  std::stringstream json;
+  json << std::ifstream(dir.file("m.json")).rdbuf();
+  return json.str();
+}
+
 SurfaceMesh disjoint_union(const SurfaceMesh& a, const SurfaceMesh& b, double shift) {
   SurfaceMesh both = a;
   both.V.conservativeResize(a.V.rows() + b.V.rows(), 3);
@@ -153,12 +162,9 @@ TEST(BetaGuard, BetaBelowTheBoundIsRaisedAndReported) {
   EXPECT_TRUE(r.cascade.bounded);
   EXPECT_TRUE(has_warning(r, "raised to"));
 
-  const test::TempDir dir;
-  write_metrics_json(dir.file("m.json"), r, options);
-  std::stringstream json;
-  json << std::ifstream(dir.file("m.json")).rdbuf();
-  EXPECT_TRUE(Contains(json.str(), "\"beta_raised\": true"));
-  EXPECT_TRUE(Contains(json.str(), "raised to"));
+  const std::string json = metrics_json_text(r, options);
+  EXPECT_TRUE(Contains(json, "\"beta_raised\": true"));
+  EXPECT_TRUE(Contains(json, "raised to"));
 
   options.raise_beta_to_bound = false;  // then the cascade runs unbounded, and says so
   const UnfoldResult unraised = unfold_surface(sphere, options);
@@ -205,11 +211,7 @@ TEST(NumericalGuard, CascadeMissingTheBandIsReported) {
   const UnfoldResult r = unfold_surface(test::uv_sphere(8, 12), options);
   EXPECT_FALSE(r.cascade.reached_band);
   EXPECT_TRUE(has_warning(r, "did not reach the band"));
-  const test::TempDir dir;
-  write_metrics_json(dir.file("m.json"), r, options);
-  std::stringstream json;
-  json << std::ifstream(dir.file("m.json")).rdbuf();
-  EXPECT_TRUE(Contains(json.str(), "\"reached_band\": false"));
+  EXPECT_TRUE(Contains(metrics_json_text(r, options), "\"reached_band\": false"));
 }
 
 }  // namespace
