@@ -400,7 +400,14 @@ SurfaceMesh read_ply(std::istream& in, const std::string& path, std::uintmax_t f
   for (;;) {
     if (!lines.next(&t)) fail(path, "the PLY header has no end_header");
     if (t[0] == "end_header") break;
-    if (t[0] == "format" && t.size() >= 2) {
+    // OpenMesh parses the header again and loops forever on some non-text
+    // bytes in it (found by fuzzing), so the header must be plain text.
+    for (const std::string_view token : t)
+      for (const char c : token)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e)
+          lines.fail("non-text byte in the PLY header");
+    if (t[0] == "format" && t.size() == 3) {
+      if (t[2] != "1.0") lines.fail("unsupported PLY version '" + std::string(t[2]) + "'");
       format = t[1];
     } else if (t[0] == "element" && t.size() == 3) {
       elements.push_back({std::string(t[1]), 0, {}});

@@ -152,6 +152,8 @@ const std::vector<BadInput>& cases() {
        3, "truncated"},
       {"off_binary_corrupt_face_size", input("binary_bad_face_count.off"), 3,
        "bad vertex count"},  // found by fuzzing: OpenMesh allocated 8 GB
+      {"ply_binary_header_garbage", input("binary_header_garbage.ply"), 3,
+       "non-text byte in the PLY header"},  // found by fuzzing: OpenMesh looped forever
       // Huge declared counts with little data: refused before allocating.
       {"off_huge_counts", input("huge_counts.off"), 3, "declares 2000000000 vertices"},
       {"ply_huge_counts", input("huge_counts.ply"), 3, "declares 1000000000 vertices"},
