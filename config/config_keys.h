@@ -15,9 +15,17 @@
     "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                   \
   X(tet_max_volume, "tetrahedralize.max_volume", tet.max_volume,                               \
     "TetGen bound on tetrahedron volume (-a), mesh units cubed; 0: no bound")                  \
+  X(fallback_surface_graph, "tetrahedralize.fallback_surface_graph", fallback_surface_graph,   \
+    "when no tet mesh can be made (TetGen fails, open surface), unfold on the surface's own "  \
+    "edge graph with a warning instead of failing")                                            \
+  X(components, "components", components,                                                      \
+    "several connected components: refuse (error naming the count) or separately (each "       \
+    "unfolded on its own, put back together in input order)")                                  \
   X(beta_mode, "beta.mode", beta_mode,                                                         \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                        \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                           \
+  X(beta_raise, "beta.raise_to_bound", raise_beta_to_bound,                                    \
+    "raise a starting beta below the boundedness bound n/lambda_2 - 1 to just above it")       \
   X(k_iter, "cascade.k_iter", cascade.k_iter, "iterations per cascade at most")                \
   X(epsilon, "cascade.epsilon", cascade.epsilon,                                               \
     "a cascade ends when the relative energy change is below this")                            \

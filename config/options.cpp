@@ -41,6 +41,12 @@ void parse_into(const YAML::Node& node, const std::string& key, double* value) {
     throw UsageError("config key '" + key + "' must be a number, got '" + describe(node) + "'");
 }
 
+void parse_into(const YAML::Node& node, const std::string& key, bool* value) {
+  if (!node.IsScalar() || !YAML::convert<bool>::decode(node, *value))
+    throw UsageError("config key '" + key + "' must be true or false, got '" + describe(node) +
+                     "'");
+}
+
 void parse_into(const YAML::Node& node, const std::string& key, std::string* value) {
   if (!node.IsScalar())
     throw UsageError("config key '" + key + "' must be a string, got '" + describe(node) + "'");
@@ -54,6 +60,7 @@ void parse_into(const YAML::Node& node, const std::string& key, std::array<doubl
   for (size_t k = 0; k < 2; ++k) parse_into(node[k], key, &(*value)[k]);
 }
 
+YAML::Node to_node(bool value) { return YAML::Node(value); }
 YAML::Node to_node(int value) { return YAML::Node(value); }
 YAML::Node to_node(int64_t value) { return YAML::Node(value); }
 YAML::Node to_node(const std::string& value) { return YAML::Node(value); }
@@ -96,6 +103,9 @@ const KeyBinding* find_binding(const std::string& path) {
 void for_each_leaf(const YAML::Node& node, const std::string& prefix,
                    const std::function<void(const std::string&, const YAML::Node&)>& visit) {
   for (const auto& item : node) {
+    if (!item.first.IsScalar())
+      throw UsageError("config key '" + describe(item.first) + "'" +
+                       (prefix.empty() ? "" : " under '" + prefix + "'") + " is not a plain name");
     const std::string path =
         prefix.empty() ? item.first.as<std::string>() : prefix + "." + item.first.as<std::string>();
     if (item.second.IsMap())
@@ -172,6 +182,8 @@ void validate_options(const Options& o) {
           "tetrahedralize.quality", "must be 0 (off) or a finite number >= 1");
   require(std::isfinite(o.tet.max_volume) && o.tet.max_volume >= 0, "tetrahedralize.max_volume",
           "must be 0 (no bound) or a positive finite number");
+  require(o.components == "refuse" || o.components == "separately", "components",
+          "must be refuse or separately, got '" + o.components + "'");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

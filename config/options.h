@@ -18,9 +18,12 @@ struct Options {
   std::string method = "local_global";
   int target_vertices = 0;
   TetOptions tet;
+  bool fallback_surface_graph = false;  ///< no tet mesh possible: unfold the surface edge graph
+  std::string components = "refuse";    ///< several components: "refuse" or "separately"
   std::string beta_mode = "relative";
   double beta_value = 1.5;
-  CascadeOptions cascade;  ///< cascade.beta is derived from beta_mode / beta_value
+  bool raise_beta_to_bound = true;  ///< a starting beta below the bound is raised above it
+  CascadeOptions cascade;           ///< cascade.beta is derived from beta_mode / beta_value
   EnergyOptions energy;
   CeresOptions ceres;
   StretchErrorOptions stretch_metric;

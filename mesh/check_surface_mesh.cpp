@@ -2,9 +2,11 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <numeric>
 
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
@@ -70,11 +72,12 @@ void check_vertices_and_faces(const SurfaceMesh& mesh) {
     throw InputError("vertex " + std::to_string(unused - used.begin()) + " is used by no face");
 }
 
-void check_single_component(const SurfaceMesh& mesh) {
+// Returns the number of components; throws if there are several and one is required.
+int check_components(const SurfaceMesh& mesh, bool require_one) {
   std::vector<int> labels;
   const int count =
       connected_components(build_edge_graph(int(mesh.V.rows()), triangulate_faces(mesh)), &labels);
-  if (count == 1) return;
+  if (count == 1 || !require_one) return count;
   std::vector<int> sizes(size_t(count), 0);
   for (int label : labels) ++sizes[size_t(label)];
   std::sort(sizes.begin(), sizes.end(), std::greater<int>());
@@ -83,14 +86,57 @@ void check_single_component(const SurfaceMesh& mesh) {
     list += (c ? ", " : "") + std::to_string(sizes[c]);
   if (sizes.size() > 10) list += ", ...";
   throw InputError("the surface has " + std::to_string(count) + " connected components (sizes " +
-                   list + "); unfold needs one");
+                   list + "); unfold needs one (or components: separately)");
+}
+
+// Vertices whose faces form more than one fan (faces around the vertex
+// linked through edges at the vertex), e.g. two cones touching at their tips.
+// Returns the count and sets *example to the lowest such vertex.
+int count_nonmanifold_vertices(const SurfaceMesh& mesh, int* example) {
+  // One union-find node per face corner.
+  std::vector<int> first_corner(mesh.faces.size() + 1, 0), corner_vertex;
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    first_corner[f + 1] = first_corner[f] + int(mesh.faces[f].size());
+    corner_vertex.insert(corner_vertex.end(), mesh.faces[f].begin(), mesh.faces[f].end());
+  }
+  std::vector<int> parent(corner_vertex.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const std::function<int(int)> find = [&](int c) {
+    return parent[size_t(c)] == c ? c : parent[size_t(c)] = find(parent[size_t(c)]);
+  };
+  // (edge key, corner at the lower vertex, corner at the higher vertex) per face side.
+  std::vector<std::array<uint64_t, 3>> sides;
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    const int n = int(mesh.faces[f].size());
+    for (int k = 0; k < n; ++k) {
+      uint64_t a = uint64_t(first_corner[f] + k), b = uint64_t(first_corner[f] + (k + 1) % n);
+      if (corner_vertex[a] > corner_vertex[b]) std::swap(a, b);
+      sides.push_back({uint64_t(corner_vertex[a]) << 32 | uint64_t(corner_vertex[b]), a, b});
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  for (size_t s = 1; s < sides.size(); ++s)
+    if (sides[s][0] == sides[s - 1][0])
+      for (int end = 1; end <= 2; ++end)
+        parent[size_t(find(int(sides[s][end])))] = find(int(sides[s - 1][end]));
+  std::vector<int> fan(size_t(mesh.V.rows()), -1);
+  std::vector<bool> nonmanifold(size_t(mesh.V.rows()), false);
+  for (size_t c = 0; c < corner_vertex.size(); ++c) {
+    int& root = fan[size_t(corner_vertex[c])];
+    if (root < 0) root = find(int(c));
+    if (root != find(int(c))) nonmanifold[size_t(corner_vertex[c])] = true;
+  }
+  const auto first = std::find(nonmanifold.begin(), nonmanifold.end(), true);
+  *example = int(first - nonmanifold.begin());
+  return int(std::count(nonmanifold.begin(), nonmanifold.end(), true));
 }
 
 }  // namespace
 
-SurfaceReport check_surface_mesh(const SurfaceMesh& mesh) {
+SurfaceReport check_surface_mesh(const SurfaceMesh& mesh, bool require_one_component) {
   check_vertices_and_faces(mesh);
-  check_single_component(mesh);
+  SurfaceReport report;
+  report.num_components = check_components(mesh, require_one_component);
 
   // Each face side as (undirected edge key, traversed low-to-high?); sorting
   // groups the sides of one edge together.
@@ -102,7 +148,6 @@ SurfaceReport check_surface_mesh(const SurfaceMesh& mesh) {
     }
   std::sort(sides.begin(), sides.end());
 
-  SurfaceReport report;
   std::string boundary_example, nonmanifold_example, misoriented_example;
   for (size_t s = 0; s < sides.size();) {
     size_t end = s;
@@ -128,6 +173,13 @@ SurfaceReport check_surface_mesh(const SurfaceMesh& mesh) {
     report.warnings.push_back(std::to_string(report.num_nonmanifold_edges) +
                               " non-manifold edges shared by more than two faces (e.g. " +
                               nonmanifold_example + ")");
+  int vertex_example = 0;
+  report.num_nonmanifold_vertices = count_nonmanifold_vertices(mesh, &vertex_example);
+  if (report.num_nonmanifold_vertices)
+    report.warnings.push_back(std::to_string(report.num_nonmanifold_vertices) +
+                              " non-manifold vertices where separate fans of faces meet (e.g. "
+                              "vertex " +
+                              std::to_string(vertex_example) + ")");
   if (report.num_misoriented_edges)
     report.warnings.push_back("inconsistent face orientation across " +
                               std::to_string(report.num_misoriented_edges) + " edges (e.g. " +

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -196,6 +197,26 @@ SurfaceMesh read_with_openmesh(const std::string& path, long long declared_verti
   return to_mesh(importer.coords, std::move(importer.faces));
 }
 
+// Walks the face records of a binary OFF ("k i1..ik", int32 each) after the
+// vertices, so that a corrupt k is refused here: OpenMesh would allocate
+// whatever it says (gigabytes, found by fuzzing).
+void check_binary_off_faces(std::istream& in, const std::string& path, int32_t vertices,
+                            int32_t faces) {
+  in.seekg(std::streamoff(12) * vertices, std::ios::cur);
+  const std::string rest((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t at = 0;
+  for (int32_t f = 0; f < faces; ++f) {
+    int32_t k;
+    if (!in || at + 4 > rest.size())
+      fail(path, "truncated: " + std::to_string(f) + " of " + std::to_string(faces) + " faces");
+    std::memcpy(&k, rest.data() + at, 4);
+    if (k < 1 || size_t(k) > (rest.size() - at - 4) / 4)
+      fail(path, "bad vertex count " + std::to_string(k) + " for face " + std::to_string(f) +
+                     " (truncated or corrupt file)");
+    at += 4 + 4 * size_t(k);
+  }
+}
+
 // OFF: "[ST][C][N]OFF [BINARY]", counts "nv nf ne", one vertex per line (x y z
 // first, then optional normal/colour values), one face per line ("k i1..ik",
 // then an optional colour).
@@ -215,6 +236,7 @@ SurfaceMesh read_off(std::istream& in, const std::string& path, std::uintmax_t f
     check_declared_size(
         path, std::to_string(counts[0]) + " vertices and " + std::to_string(counts[1]) + " faces",
         12.0 * counts[0] + 16.0 * counts[1], file_size);
+    check_binary_off_faces(in, path, counts[0], counts[1]);
     return read_with_openmesh(path, counts[0], counts[1]);
   }
   t.erase(t.begin());
@@ -378,7 +400,14 @@ SurfaceMesh read_ply(std::istream& in, const std::string& path, std::uintmax_t f
   for (;;) {
     if (!lines.next(&t)) fail(path, "the PLY header has no end_header");
     if (t[0] == "end_header") break;
-    if (t[0] == "format" && t.size() >= 2) {
+    // OpenMesh parses the header again and loops forever on some non-text
+    // bytes in it (found by fuzzing), so the header must be plain text.
+    for (const std::string_view token : t)
+      for (const char c : token)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e)
+          lines.fail("non-text byte in the PLY header");
+    if (t[0] == "format" && t.size() == 3) {
+      if (t[2] != "1.0") lines.fail("unsupported PLY version '" + std::string(t[2]) + "'");
       format = t[1];
     } else if (t[0] == "element" && t.size() == 3) {
       elements.push_back({std::string(t[1]), 0, {}});

@@ -55,6 +55,8 @@ void write_metrics_json(const std::string& path, const UnfoldResult& r, const Op
         << "  \"cascades\": " << c.cascades << ",\n"
         << "  \"beta\": " << number(c.final_beta) << ",\n"
         << "  \"beta_start\": " << number(r.beta_start) << ",\n"
+        << "  \"beta_requested\": " << number(r.beta_requested) << ",\n"
+        << "  \"beta_raised\": " << boolean(r.beta_raised) << ",\n"
         << "  \"lambda2\": " << number(r.lambda2) << ",\n"
         << "  \"surface_vertices\": " << r.surface.V.rows() << ",\n"
         << "  \"surface_faces\": " << r.surface.faces.size() << ",\n"

@@ -12,6 +12,7 @@
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
+#include "pipeline/unfold_components.h"
 #include "solvers/ceres_backend.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
@@ -35,23 +36,54 @@ void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {
                            std::to_string(graph.edges(e, 1)) + " has zero length");
 }
 
+// The tet mesh of a closed surface; when none can be made (open surface,
+// tetrahedralization failed) and the options allow it, the surface alone: a
+// TetMesh without tets, whose edge graph is then the triangles'.
+TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const Options& options,
+                                    TetReport* report, std::vector<std::string>* warnings) {
+  std::string reason = "the surface is open";
+  if (!open) {
+    try {
+      return tetrahedralize(surface, options.tet, report);
+    } catch (const NumericalError& e) {
+      if (!options.fallback_surface_graph)
+        throw NumericalError(std::string(e.what()) +
+                             " (tetrahedralize.fallback_surface_graph: true unfolds the surface "
+                             "edge graph instead)");
+      reason = e.what();
+    }
+  }
+  warnings->push_back("no tet mesh (" + reason + "): unfolding on the surface edge graph");
+  LOG(WARNING) << warnings->back();
+  TetMesh surface_only;
+  surface_only.V = surface.V;
+  surface_only.T.resize(0, 4);
+  surface_only.num_surface_vertices = int(surface.V.rows());
+  *report = TetReport{};
+  report->route = "surface_graph";
+  return surface_only;
+}
+
 }  // namespace
 
 PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
   validate_options(options);
   PreparedMesh prepared;
-  const SurfaceReport report = check_surface_mesh(input);
+  const SurfaceReport report = check_surface_mesh(input, true);
   // A tet mesh needs a closed surface. The robust route's winding number closes
   // small holes (cat0 has 76 boundary edges in 83,606); larger ones leave no
-  // well-defined inside, and the conforming route needs none at all.
+  // well-defined inside, and the conforming route needs none at all. The
+  // surface graph may stand in when allowed.
   size_t num_sides = 0;
   for (const auto& f : input.faces) num_sides += f.size();
   const bool small_holes = options.tet.route != "conforming" &&
                            size_t(report.num_boundary_edges) * 200 <= num_sides;
-  if (report.num_boundary_edges > 0 && !small_holes)
+  const bool open = report.num_boundary_edges > 0 && !small_holes;
+  if (open && !options.fallback_surface_graph)
     throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
-                     " boundary edges); unfold needs a closed surface (or, with the auto and "
-                     "robust routes, at most 1% boundary edges)");
+                     " boundary edges); unfold needs a closed surface (with the auto and robust "
+                     "routes: at most 1% boundary edges; or tetrahedralize.fallback_surface_graph: "
+                     "true)");
   prepared.warnings = report.warnings;
   for (const auto& w : report.warnings) LOG(WARNING) << w;
 
@@ -64,7 +96,8 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
     prepared.surface = input;
   }
 
-  prepared.tets = tetrahedralize(prepared.surface, options.tet, &prepared.tet_report);
+  prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options,
+                                              &prepared.tet_report, &prepared.warnings);
   LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
             << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
             << " s";
@@ -80,7 +113,10 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   result.warnings = prepared.warnings;
 
   const auto start = std::chrono::steady_clock::now();
-  const EdgeGraph graph = build_edge_graph(int(result.tets.V.rows()), result.tets.T);
+  const EdgeGraph graph = build_edge_graph(
+      int(result.tets.V.rows()), result.tets.T.rows() > 0
+                                     ? Eigen::MatrixXi(result.tets.T)
+                                     : Eigen::MatrixXi(triangulate_faces(result.surface)));
   check_tet_graph(graph, result.tets.V);
   result.num_edges = graph.num_edges();
   UnfoldProblem problem;
@@ -90,8 +126,19 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   const int n = graph.num_vertices;
   result.lambda2 = fiedler_value(beta_laplacian(problem));
   const double bound = n / result.lambda2;
-  result.beta_start =
+  result.beta_requested =
       options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
+  result.beta_start = result.beta_requested;
+  // (beta + 1) lambda_2 > n keeps the energy bounded (docs/method.md); 1% above
+  // the bound leaves room for the error in lambda_2.
+  if (options.raise_beta_to_bound && result.beta_start <= bound - 1) {
+    result.beta_start = 1.01 * bound - 1;
+    result.beta_raised = true;
+    result.warnings.push_back("beta " + std::to_string(result.beta_requested) +
+                              " is below the bound n/lambda_2 - 1 = " + std::to_string(bound - 1) +
+                              ": raised to " + std::to_string(result.beta_start));
+    LOG(WARNING) << result.warnings.back();
+  }
   LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << result.lambda2
             << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start
             << ", method " << options.method;
@@ -139,6 +186,8 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
 }
 
 UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
+  if (options.components == "separately" && check_surface_mesh(input, false).num_components > 1)
+    return unfold_components_separately(input, options);
   return unfold_prepared(prepare_mesh(input, options), options);
 }
 

@@ -41,7 +41,9 @@ struct UnfoldResult {
   TetReport tet_report;
   int num_edges = 0;
   double lambda2 = 0;
-  double beta_start = 0;
+  double beta_requested = 0;  ///< starting beta from the options (beta.mode, beta.value)
+  double beta_start = 0;      ///< starting beta used: beta_requested, or raised above the bound
+  bool beta_raised = false;   ///< beta_requested was below n/lambda_2 - 1 and was raised
   CascadeResult cascade;
   UnfoldMetrics metrics;
   double seconds_unfold = 0;  ///< lambda_2 and the cascade
@@ -49,8 +51,12 @@ struct UnfoldResult {
 };
 
 /// Checks, simplifies (options.target_vertices) and tetrahedralizes a surface.
-/// @throws InputError for a surface that fails the checks, NumericalError when
-///         tetrahedralization fails, UsageError for bad options
+/// With options.fallback_surface_graph, an open surface or one that cannot be
+/// tetrahedralized yields the surface alone (tets.T empty, route
+/// "surface_graph", a warning): it is then unfolded on its own edge graph.
+/// @throws InputError for a surface that fails the checks (several components
+///         included), NumericalError when tetrahedralization fails (without
+///         the fallback), UsageError for bad options
 PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options);
 
 /// Unfolds a prepared mesh with the options' energy terms, backend and cascade.
@@ -58,7 +64,10 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options);
 ///         UsageError for bad options
 UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options);
 
-/// Unfolds a surface into its canonical pose: prepare_mesh, then unfold_prepared.
+/// Unfolds a surface into its canonical pose: prepare_mesh, then
+/// unfold_prepared. With options.components == "separately" a surface of
+/// several components is unfolded one component at a time
+/// (unfold_components_separately).
 /// @param surface  the input surface, as read (it is checked here)
 /// @param options  validated options (load_options)
 /// @throws InputError for a surface that fails the checks, NumericalError when

@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "core/errors.h"
 #include "metrics/edge_ratio.h"
@@ -64,8 +65,9 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
   try {
     data->ldlt.factorize(data->A);
   } catch (const NumericalError& e) {
-    throw NumericalError("factorizing the global matrix failed at beta = " + std::to_string(beta) +
-                         ": " + e.what());
+    std::ostringstream what;
+    what << "factorizing the global matrix failed at beta = " << beta << ": " << e.what();
+    throw NumericalError(what.str());
   }
   data->beta = beta;
   data->negative_pivots = data->ldlt.negative_pivots();
@@ -93,9 +95,12 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     fit_rotations(problem, *Q, data_.beta, &R_);
     global_step(data_, R_, Q);
     const int iteration = int(history->size()) + 1;
-    if (!Q->allFinite())
-      throw NumericalError("non-finite positions at iteration " + std::to_string(iteration) +
-                           " (beta = " + std::to_string(data_.beta) + ")");
+    if (!Q->allFinite()) {
+      std::ostringstream what;
+      what << "non-finite positions at iteration " << iteration << " (cascade " << cascade
+           << ", beta = " << data_.beta << ")";
+      throw NumericalError(what.str());
+    }
     const double delta = edge_ratio(*problem.graph, problem.rest, *Q);
     const double energy = total_energy(problem, *Q, R_, data_.beta);
     history->push_back({iteration, cascade, data_.beta, energy, delta});

@@ -40,7 +40,9 @@ void local_global_set_beta(double beta, LocalGlobalData* data);
 
 /// True when A is positive definite off the constant vector (its only negative
 /// direction is 1, from the stretch term): the global step is then a minimiser.
-inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_pivots == 1; }
+/// That negative direction (eigenvalue -2n) can vanish in rounding when beta
+/// is huge, so no negative pivot counts as bounded too.
+inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_pivots <= 1; }
 
 /// Whether the quadratic terms at beta are bounded below off the constant
 /// vector (one LDL^T factorization; non-quadratic terms are ignored).

@@ -90,7 +90,8 @@ TEST(MeshCheckTest, SeveralComponentsListsSizes) {
     }
   }
   EXPECT_EQ(check_error(mesh),
-            "the surface has 3 connected components (sizes 6, 4, 4); unfold needs one");
+            "the surface has 3 connected components (sizes 6, 4, 4); unfold needs one (or "
+            "components: separately)");
 }
 
 TEST(MeshCheckTest, FatalChecksRunInDocumentedOrder) {
@@ -132,6 +133,35 @@ TEST(MeshCheckTest, FlippedFaceReportsMisorientedEdges) {
   EXPECT_EQ(report.num_boundary_edges, 0);
   ASSERT_EQ(report.warnings.size(), 1u);
   EXPECT_TRUE(Contains(report.warnings[0], "inconsistent face orientation across 3 edges"));
+}
+
+TEST(MeshCheckTest, TwoClosedSurfacesTouchingAtAVertexReportANonManifoldVertex) {
+  SurfaceMesh mesh = test::tetrahedron();  // a second tetrahedron shares vertex 0 only
+  mesh.V.conservativeResize(7, 3);
+  mesh.V.bottomRows(3) << 3, 1, 1, 1, 3, 1, 1, 1, 3;
+  for (const std::vector<int>& f : {std::vector<int>{0, 4, 5}, {0, 6, 4}, {0, 5, 6}, {4, 6, 5}})
+    mesh.faces.push_back(f);
+  const SurfaceReport report = check_surface_mesh(mesh);
+  EXPECT_EQ(report.num_nonmanifold_vertices, 1);
+  EXPECT_EQ(report.num_nonmanifold_edges, 0);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_TRUE(Contains(report.warnings[0], "1 non-manifold vertices"));
+  EXPECT_TRUE(Contains(report.warnings[0], "vertex 0"));
+  EXPECT_EQ(check_surface_mesh(test::octahedron()).num_nonmanifold_vertices, 0);
+  EXPECT_EQ(check_surface_mesh(test::three_pages()).num_nonmanifold_vertices, 0);
+}
+
+TEST(MeshCheckTest, ComponentsCountedWhenOneIsNotRequired) {
+  SurfaceMesh mesh = test::tetrahedron();
+  const SurfaceMesh other = test::octahedron();
+  mesh.V.conservativeResize(10, 3);
+  mesh.V.bottomRows(6) = other.V.array() + 5.0;
+  for (auto f : other.faces) {
+    for (int& v : f) v += 4;
+    mesh.faces.push_back(f);
+  }
+  EXPECT_EQ(check_surface_mesh(mesh, false).num_components, 2);
+  EXPECT_TRUE(Contains(check_error(mesh), "2 connected components (sizes 6, 4)"));
 }
 
 }  // namespace

@@ -58,16 +58,5 @@ TEST(PipelineInput, RefusesAnOpenSurface) {
   }
 }
 
-TEST(PipelineInput, BetaBelowTheBoundIsReported) {
-  // Half of n / lambda_2: below the bound, the first cascade runs unbounded.
-  Options options;
-  options.beta_value = 0.5;
-  options.cascade.num_cascades = 1;
-  options.cascade.k_iter = 2;
-  const UnfoldResult r = unfold_surface(make_articulated_shape(ShapePose::rest(), 32), options);
-  EXPECT_FALSE(r.cascade.bounded);
-  EXPECT_FALSE(r.warnings.empty());
-}
-
 }  // namespace
 }  // namespace unfold

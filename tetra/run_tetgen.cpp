@@ -122,12 +122,15 @@ TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::st
   const size_t tet_bytes = sizeof(int) * 4 * size_t(counts[2]);
   if (data.size() != sizeof counts + point_bytes + tet_bytes)
     throw NumericalError(what + ": TetGen's process ended before sending its result");
+  // TetGen's arrays are row-major. They sit at 4-byte offsets in the message,
+  // so they are copied out rather than read in place (doubles need 8).
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> points(counts[1], 3);
+  Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor> tets(counts[2], 4);
+  std::memcpy(points.data(), data.data() + sizeof counts, point_bytes);
+  std::memcpy(tets.data(), data.data() + sizeof counts + point_bytes, tet_bytes);
   TetgenOutput result;
-  // TetGen's arrays are row-major; copy into row-major maps of Eigen's column-major matrices.
-  result.points = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
-      reinterpret_cast<const double*>(data.data() + sizeof counts), counts[1], 3);
-  result.tets = Eigen::Map<const Eigen::Matrix<int, Eigen::Dynamic, 4, Eigen::RowMajor>>(
-      reinterpret_cast<const int*>(data.data() + sizeof counts + point_bytes), counts[2], 4);
+  result.points = points;
+  result.tets = tets;
   return result;
 }
 

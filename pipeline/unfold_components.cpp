@@ -1,0 +1,138 @@
+#include "pipeline/unfold_components.h"
+
+#include <glog/logging.h>
+
+#include <algorithm>
+
+#include "core/errors.h"
+#include "mesh/split_surface_components.h"
+
+namespace unfold {
+namespace {
+
+UnfoldResult unfold_part(const SurfaceMesh& part, const Options& options, int number) {
+  const std::string where = "component " + std::to_string(number) + ": ";
+  try {
+    return unfold_surface(part, options);
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
+  } catch (const NumericalError& e) {
+    throw NumericalError(where + e.what());
+  }
+}
+
+// Copies row i of `from` to row map[i] of `to`.
+void scatter_rows(const Eigen::MatrixX3d& from, const std::vector<int>& map, Eigen::MatrixX3d* to) {
+  for (Eigen::Index i = 0; i < from.rows(); ++i) to->row(map[size_t(i)]) = from.row(i);
+}
+
+}  // namespace
+
+UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Options& options) {
+  const std::vector<SurfaceComponent> components = split_surface_components(surface);
+  LOG(INFO) << "unfolding " << components.size() << " connected components separately";
+  Options part_options = options;
+  part_options.components = "refuse";
+  std::vector<UnfoldResult> parts;
+  for (size_t c = 0; c < components.size(); ++c)
+    parts.push_back(unfold_part(components[c].mesh, part_options, int(c) + 1));
+
+  const bool simplified = [&] {
+    for (size_t c = 0; c < parts.size(); ++c)
+      if (parts[c].surface.V.rows() != components[c].mesh.V.rows()) return true;
+    return false;
+  }();
+
+  // Where each part's surface and tet vertices go in the merged meshes:
+  // surface vertices first (input order, or the parts one after the other
+  // when simplified), then every part's interior vertices.
+  Eigen::Index num_surface = 0, num_tet_vertices = 0, num_tets = 0;
+  for (const auto& r : parts) {
+    num_surface += r.surface.V.rows();
+    num_tet_vertices += r.tets.V.rows();
+    num_tets += r.tets.T.rows();
+  }
+  std::vector<std::vector<int>> tet_map(parts.size());
+  for (size_t c = 0, surface_offset = 0, interior_offset = size_t(num_surface); c < parts.size();
+       ++c) {
+    const TetMesh& tets = parts[c].tets;
+    for (int v = 0; v < int(tets.V.rows()); ++v)
+      tet_map[c].push_back(v >= tets.num_surface_vertices ? int(interior_offset++)
+                           : simplified                   ? int(surface_offset + size_t(v))
+                                                          : components[c].vertices[size_t(v)]);
+    surface_offset += size_t(tets.num_surface_vertices);
+  }
+
+  UnfoldResult merged;
+  merged.surface.V.resize(num_surface, 3);
+  merged.canonical.V.resize(num_surface, 3);
+  merged.tets.V.resize(num_tet_vertices, 3);
+  merged.tets.T.resize(num_tets, 4);
+  merged.tets.num_surface_vertices = int(num_surface);
+  merged.tet_canonical.resize(num_tet_vertices, 3);
+  merged.tet_report.route = parts.front().tet_report.route;
+  merged.lambda2 = parts.front().lambda2;
+  merged.beta_requested = merged.beta_start = parts.front().beta_start;
+  merged.warnings.push_back(std::to_string(parts.size()) +
+                            " connected components unfolded separately");
+  CascadeResult& cascade = merged.cascade;
+  cascade.reached_band = true;
+  UnfoldMetrics& m = merged.metrics;
+  double edge_ratio_sum = 0, rig_sum = 0, str_sum = 0, geo_sum = 0;
+  Eigen::Index tet_row = 0;
+  for (size_t c = 0; c < parts.size(); ++c) {
+    const UnfoldResult& r = parts[c];
+    const std::vector<int>& map = tet_map[c];
+    const std::vector<int> surface_map(map.begin(), map.begin() + r.tets.num_surface_vertices);
+    scatter_rows(r.surface.V, surface_map, &merged.surface.V);
+    scatter_rows(r.canonical.V, surface_map, &merged.canonical.V);
+    scatter_rows(r.tets.V, map, &merged.tets.V);
+    scatter_rows(r.tet_canonical, map, &merged.tet_canonical);
+    for (Eigen::Index t = 0; t < r.tets.T.rows(); ++t, ++tet_row)
+      for (int k = 0; k < 4; ++k) merged.tets.T(tet_row, k) = map[size_t(r.tets.T(t, k))];
+    if (simplified)
+      for (auto face : r.surface.faces) {
+        for (int& v : face) v = surface_map[size_t(v)];
+        merged.surface.faces.push_back(face);
+      }
+    if (r.tet_report.route != merged.tet_report.route) merged.tet_report.route = "mixed";
+    merged.tet_report.num_tets += r.tet_report.num_tets;
+    merged.tet_report.num_interior_points += r.tet_report.num_interior_points;
+    merged.tet_report.seconds += r.tet_report.seconds;
+    merged.num_edges += r.num_edges;
+    merged.lambda2 = std::min(merged.lambda2, r.lambda2);
+    merged.beta_requested = std::min(merged.beta_requested, r.beta_requested);
+    merged.beta_start = std::min(merged.beta_start, r.beta_start);
+    merged.beta_raised = merged.beta_raised || r.beta_raised;
+    merged.seconds_unfold += r.seconds_unfold;
+    for (const auto& w : r.warnings)
+      merged.warnings.push_back("component " + std::to_string(c + 1) + ": " + w);
+
+    for (IterationRecord h : r.cascade.history) {
+      h.iteration += cascade.iterations;
+      cascade.history.push_back(h);
+    }
+    cascade.iterations += r.cascade.iterations;
+    cascade.cascades = std::max(cascade.cascades, r.cascade.cascades);
+    cascade.final_beta = std::max(cascade.final_beta, r.cascade.final_beta);
+    cascade.reached_band = cascade.reached_band && r.cascade.reached_band;
+    cascade.bounded = cascade.bounded && r.cascade.bounded;
+    edge_ratio_sum += r.cascade.edge_ratio * r.num_edges;
+    rig_sum += r.metrics.E_rig * r.num_edges;
+    str_sum += r.metrics.E_str * double(r.tets.V.rows());
+    geo_sum += r.metrics.E_geo * double(r.tets.V.rows());
+    m.E_str_exact = m.E_str_exact && r.metrics.E_str_exact;
+    m.E_geo_exact = m.E_geo_exact && r.metrics.E_geo_exact;
+    m.seconds += r.metrics.seconds;
+  }
+  if (!simplified) merged.surface.faces = surface.faces;
+  merged.canonical.faces = merged.surface.faces;
+  cascade.edge_ratio = edge_ratio_sum / merged.num_edges;
+  cascade.positions = merged.tet_canonical.rowwise() - merged.tet_canonical.colwise().mean();
+  m.E_rig = rig_sum / merged.num_edges;
+  m.E_str = str_sum / double(num_tet_vertices);
+  m.E_geo = geo_sum / double(num_tet_vertices);
+  return merged;
+}
+
+}  // namespace unfold

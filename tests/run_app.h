@@ -1,0 +1,49 @@
+// Runs the unfold command line as a subprocess for the CLI and bad-input
+// tests: exit code, stderr, and the check that a failed run wrote nothing.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace unfold::test {
+
+struct AppRun {
+  int exit_code;    ///< the process's exit status, -1 if it died from a signal
+  std::string err;  ///< everything it wrote to stderr
+};
+
+/// Runs `build/bin/unfold <args>` (args are passed through the shell).
+inline AppRun run_unfold(const std::string& args) {
+  // One stderr file per process: ctest runs tests in parallel processes.
+  const std::string err_path =
+      ::testing::TempDir() + "unfold_stderr_" + std::to_string(getpid()) + ".txt";
+  const int status = std::system(
+      (std::string(UNFOLD_BIN_DIR) + "/unfold " + args + " 2>" + err_path + " >/dev/null").c_str());
+  std::ifstream in(err_path);
+  std::stringstream err;
+  err << in.rdbuf();
+  std::remove(err_path.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, err.str()};
+}
+
+inline bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
+
+/// Runs unfold with `args --output output` and expects exit `code`, the one-line
+/// error format with `words` in it, and no file at `output` afterwards.
+inline void expect_failure(const std::string& args, int code, const std::string& words,
+                           const std::string& output) {
+  const AppRun r = run_unfold(args + " --output " + output);
+  EXPECT_EQ(r.exit_code, code) << r.err;
+  EXPECT_NE(r.err.find("unfold: error: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(words), std::string::npos) << "'" << words << "' not in: " << r.err;
+  EXPECT_FALSE(file_exists(output)) << "a failed run left " << output;
+}
+
+}  // namespace unfold::test
