@@ -9,12 +9,14 @@
 #include "mesh/edge_graph.h"
 #include "mesh/simplify_surface_mesh.h"
 #include "mesh/tet_volumes.h"
+#include "metrics/edge_ratio.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
 #include "solvers/ceres_backend.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
+#include "solvers/lsmds.h"
 
 namespace unfold {
 namespace {
@@ -35,6 +37,49 @@ void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {
                            std::to_string(graph.edges(e, 1)) + " has zero length");
 }
 
+// The paper's method and the energy-term baselines: lambda_2, beta, the cascade.
+void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult* out) {
+  UnfoldResult& result = *out;
+  UnfoldProblem problem;
+  problem.graph = &graph;
+  problem.rest = result.tets.V;
+  problem.terms = make_energy_terms(result.tets, graph, options.energy);
+  const int n = graph.num_vertices;
+  result.lambda2 = fiedler_value(beta_laplacian(problem));
+  const double bound = n / result.lambda2;
+  result.beta_start =
+      options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
+  LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << result.lambda2
+            << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start
+            << ", method " << options.method;
+  CascadeOptions cascade = options.cascade;
+  cascade.beta = result.beta_start;
+  std::unique_ptr<CascadeBackend> backend;
+  int iterations_per_cascade = options.cascade.k_iter;
+  if (options.method == "ceres" || options.method == "dpmu") {
+    backend = std::make_unique<CeresBackend>(problem, options.ceres);
+    iterations_per_cascade = options.ceres.max_num_iterations;
+  } else {
+    backend = std::make_unique<LocalGlobalBackend>(problem);
+  }
+  result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
+}
+
+// LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =
+// the final stress (no per-iteration history: it has no edge ratio per step).
+CascadeResult lsmds_cascade_result(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                   const LsmdsOptions& options) {
+  const LsmdsResult lsmds_result = lsmds(graph, P, options);
+  CascadeResult c;
+  c.positions = lsmds_result.positions;
+  c.iterations = lsmds_result.iterations;
+  c.cascades = 1;
+  c.final_energy = lsmds_result.stress.back();
+  c.edge_ratio = edge_ratio(graph, P, c.positions);
+  c.reached_band = true;  // no band applies
+  return c;
+}
+
 }  // namespace
 
 PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
@@ -46,8 +91,8 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
   // well-defined inside, and the conforming route needs none at all.
   size_t num_sides = 0;
   for (const auto& f : input.faces) num_sides += f.size();
-  const bool small_holes = options.tet.route != "conforming" &&
-                           size_t(report.num_boundary_edges) * 200 <= num_sides;
+  const bool small_holes =
+      options.tet.route != "conforming" && size_t(report.num_boundary_edges) * 200 <= num_sides;
   if (report.num_boundary_edges > 0 && !small_holes)
     throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
                      " boundary edges); unfold needs a closed surface (or, with the auto and "
@@ -83,29 +128,11 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   const EdgeGraph graph = build_edge_graph(int(result.tets.V.rows()), result.tets.T);
   check_tet_graph(graph, result.tets.V);
   result.num_edges = graph.num_edges();
-  UnfoldProblem problem;
-  problem.graph = &graph;
-  problem.rest = result.tets.V;
-  problem.terms = make_energy_terms(result.tets, graph, options.energy);
-  const int n = graph.num_vertices;
-  result.lambda2 = fiedler_value(beta_laplacian(problem));
-  const double bound = n / result.lambda2;
-  result.beta_start =
-      options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
-  LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << result.lambda2
-            << ", n/lambda_2 = " << bound << ", starting beta = " << result.beta_start
-            << ", method " << options.method;
-  CascadeOptions cascade = options.cascade;
-  cascade.beta = result.beta_start;
-  std::unique_ptr<CascadeBackend> backend;
-  int iterations_per_cascade = options.cascade.k_iter;
-  if (options.method == "ceres") {
-    backend = std::make_unique<CeresBackend>(problem, options.ceres);
-    iterations_per_cascade = options.ceres.max_num_iterations;
+  if (options.method == "lsmds") {
+    result.cascade = lsmds_cascade_result(graph, result.tets.V, options.lsmds);
   } else {
-    backend = std::make_unique<LocalGlobalBackend>(problem);
+    solve_cascade(graph, options, &result);
   }
-  result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
