@@ -42,8 +42,8 @@ std::string number(double x, const char* format = "%.4f") {
   return text;
 }
 
-// A CSV file of the runs (retrieval.csv, pose_invariance.csv) as a Markdown
-// table, the run label appended to the method column (the last but one).
+// A CSV file of the runs (retrieval.csv) as one Markdown table, the run label
+// appended to the method column (the last but one).
 std::string csv_table(const std::vector<ReportRun>& runs, const std::string& file) {
   std::ostringstream md;
   bool header = false;
@@ -75,6 +75,40 @@ std::string csv_table(const std::vector<ReportRun>& runs, const std::string& fil
     }
   }
   return header ? md.str() : "(none)\n";
+}
+
+// pose_invariance.csv of the runs pivoted: classes x methods.
+std::string pose_table(const std::vector<ReportRun>& runs) {
+  std::vector<std::string> methods;
+  std::map<std::string, std::map<std::string, std::string>> cells;  // class -> method -> value
+  for (const auto& run : runs) {
+    std::ifstream in(run.output_dir + "/pose_invariance.csv");
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line)) {
+      std::vector<std::string> f;
+      std::istringstream s(line);
+      for (std::string x; std::getline(s, x, ',');) f.push_back(x);
+      if (f.size() != 3) continue;
+      const std::string method = run.label.empty() ? f[1] : f[1] + "@" + run.label;
+      if (std::find(methods.begin(), methods.end(), method) == methods.end())
+        methods.push_back(method);
+      cells[f[0]][method] = number(std::stod(f[2]));
+    }
+  }
+  if (cells.empty()) return "(none)\n";
+  std::ostringstream md;
+  md << "| class |";
+  for (const auto& m : methods) md << ' ' << m << " |";
+  md << "\n|---|";
+  for (size_t k = 0; k < methods.size(); ++k) md << "---|";
+  md << '\n';
+  for (const auto& [c, values] : cells) {
+    md << "| " << c << " |";
+    for (const auto& m : methods) md << ' ' << (values.count(m) ? values.at(m) : "-") << " |";
+    md << '\n';
+  }
+  return md.str();
 }
 
 }  // namespace
@@ -117,7 +151,7 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
   if (failures == 0) md << "none\n";
   md << "\n### Retrieval: nearest-neighbour accuracy\n\n" << csv_table(runs, "retrieval.csv");
   md << "\n### Pose invariance: mean aligned vertex distance / sqrt(area) between poses\n\n"
-     << csv_table(runs, "pose_invariance.csv");
+     << pose_table(runs);
   md << "\n### Mean seconds per shape (solve and metrics)\n\n| method | seconds |\n|---|---|\n";
   for (const auto& m : methods) {
     double sum = 0;
