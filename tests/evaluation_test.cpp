@@ -12,6 +12,8 @@
 #include "metrics/pose_invariance.h"
 #include "metrics/shape_retrieval.h"
 #include "pipeline/batch_run.h"
+#include "pipeline/evaluation_report.h"
+#include "render/plot_cdf.h"
 #include "shapes/articulated_shape.h"
 #include "test_files.h"
 #include "test_meshes.h"
@@ -110,6 +112,46 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   EXPECT_NE(p.str().find("body,raw,"), std::string::npos) << p.str();
   EXPECT_NE(p.str().find("body,default,"), std::string::npos) << p.str();
   EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default.csv"));
+}
+
+}  // namespace
+}  // namespace unfold
+
+namespace unfold {
+namespace {
+
+TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
+  test::TempDir dir;
+  write_results_csv(dir.file("results.csv"),
+                    {{"cat0", "cat", "default", 0.5, 0.1, 0.2, 1.0, "ok"},
+                     {"cat1", "cat", "default", 0.7, 0.3, 0.4, 1.0, "ok"},
+                     {"cat0", "cat", "lsmds", 3.0, 0.2, 0.05, 2.0, "ok"},
+                     {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}});
+  test::write_bytes(dir.file("retrieval.csv"), "method,nn_accuracy\nraw,0.5\ndefault,1\n");
+  test::write_bytes(dir.file("pose_invariance.csv"),
+                    "class,method,pose_distance\ncat,raw,0.2\ncat,default,0.1\n");
+  const std::string dir_path = dir.file("");
+  const std::string md = evaluation_report_markdown({{dir_path, "2k"}});
+  EXPECT_NE(md.find("| cat | 0.6000 (2/2) | 3.0000 (1/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("cat1, lsmds@2k: no, it failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("| default@2k | 1.0000 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 0.2000 | 0.1000 |"), std::string::npos) << md;
+  write_cdf_plots({{dir_path, ""}}, dir_path);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("cdf_E_rig.png")));
+}
+
+TEST(Report, CdfPlotDrawsEachSeriesAndRefusesEmptyOnes) {
+  const Image image = plot_cdf({{"a", {0.1, 0.5, 0.9}}, {"b", {0.3}}}, "x");
+  int blue = 0, red = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      blue += image.at(x, y) == Rgb{31, 119, 180};
+      red += image.at(x, y) == Rgb{214, 39, 40};
+    }
+  EXPECT_GT(blue, 100);
+  EXPECT_GT(red, 100);
+  EXPECT_THROW(plot_cdf({{"a", {}}}, "x"), UsageError);
+  EXPECT_THROW(plot_cdf({}, "x"), UsageError);
 }
 
 }  // namespace
