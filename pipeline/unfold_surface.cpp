@@ -66,11 +66,14 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
 }
 
 // LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =
-// the final stress (no per-iteration history: it has no edge ratio per step).
+// the stress (beta 0 in the history).
 CascadeResult lsmds_cascade_result(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                    const LsmdsOptions& options) {
-  const LsmdsResult lsmds_result = lsmds(graph, P, options);
   CascadeResult c;
+  const LsmdsResult lsmds_result =
+      lsmds(graph, P, options, [&](int k, const Eigen::MatrixX3d& X, double stress) {
+        c.history.push_back({k, 1, 0.0, stress, edge_ratio(graph, P, X)});
+      });
   c.positions = lsmds_result.positions;
   c.iterations = lsmds_result.iterations;
   c.cascades = 1;

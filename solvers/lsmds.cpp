@@ -106,7 +106,7 @@ double guttman_transform(const LandmarkDistances& distances, const Eigen::Matrix
 }
 
 LsmdsResult smacof(const LandmarkDistances& distances, const Eigen::MatrixX3d& X0,
-                   const LsmdsOptions& options) {
+                   const LsmdsOptions& options, const LsmdsCallback& on_iterate) {
   validate_lsmds_options(options);
   const int n = int(X0.rows());
   if (distances.rows.cols() != n ||
@@ -119,6 +119,7 @@ LsmdsResult smacof(const LandmarkDistances& distances, const Eigen::MatrixX3d& X
   for (int it = 0; it < options.max_iterations; ++it) {
     const double stress = guttman_transform(distances, result.positions, &next);
     result.stress.push_back(stress);
+    if (it > 0 && on_iterate) on_iterate(it, result.positions, stress);
     if (it > 0) {
       const double previous = result.stress[result.stress.size() - 2];
       if (previous - stress <= options.tolerance * previous) {
@@ -132,6 +133,7 @@ LsmdsResult smacof(const LandmarkDistances& distances, const Eigen::MatrixX3d& X
   if (!result.converged) {
     Eigen::MatrixX3d unused;
     result.stress.push_back(guttman_transform(distances, result.positions, &unused));
+    if (on_iterate) on_iterate(result.iterations, result.positions, result.stress.back());
   }
   LOG(INFO) << "lsmds (" << (result.exact ? "exact" : "landmarks") << ", "
             << distances.landmarks.size() << " rows): stress " << result.stress.front() << " -> "
@@ -139,8 +141,9 @@ LsmdsResult smacof(const LandmarkDistances& distances, const Eigen::MatrixX3d& X
   return result;
 }
 
-LsmdsResult lsmds(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const LsmdsOptions& options) {
-  return smacof(lsmds_distances(graph, P, options), P, options);
+LsmdsResult lsmds(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const LsmdsOptions& options,
+                  const LsmdsCallback& on_iterate) {
+  return smacof(lsmds_distances(graph, P, options), P, options, on_iterate);
 }
 
 }  // namespace unfold

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "mesh/edge_graph.h"
@@ -57,14 +58,19 @@ LandmarkDistances lsmds_distances(const EdgeGraph& graph, const Eigen::MatrixX3d
 double guttman_transform(const LandmarkDistances& distances, const Eigen::MatrixX3d& X,
                          Eigen::MatrixX3d* next);
 
+/// Called with k >= 1, the positions after k transforms and their stress.
+using LsmdsCallback = std::function<void(int k, const Eigen::MatrixX3d& X, double stress)>;
+
 /// SMACOF from X0 until the relative stress decrease falls below
 /// options.tolerance or options.max_iterations transforms.
+/// @param on_iterate if set, called once per iterate after the first transform
 /// @throws UsageError if X0 does not match distances
 LsmdsResult smacof(const LandmarkDistances& distances, const Eigen::MatrixX3d& X0,
-                   const LsmdsOptions& options);
+                   const LsmdsOptions& options, const LsmdsCallback& on_iterate = {});
 
 /// lsmds_distances, then smacof from P.
 /// @throws as lsmds_distances
-LsmdsResult lsmds(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const LsmdsOptions& options);
+LsmdsResult lsmds(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const LsmdsOptions& options,
+                  const LsmdsCallback& on_iterate = {});
 
 }  // namespace unfold

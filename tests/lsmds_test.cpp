@@ -105,6 +105,9 @@ TEST(Baselines, LsmdsAndDpmuRunThroughThePipeline) {
   lsmds_options.method = "lsmds";
   const UnfoldResult l = unfold_prepared(prepared, lsmds_options);
   EXPECT_GT(l.cascade.iterations, 0);
+  ASSERT_EQ(l.cascade.history.size(), size_t(l.cascade.iterations));
+  EXPECT_DOUBLE_EQ(l.cascade.history.back().energy, l.cascade.final_energy);
+  EXPECT_DOUBLE_EQ(l.cascade.history.back().edge_ratio, l.cascade.edge_ratio);
   EXPECT_TRUE(l.canonical.V.allFinite());
   EXPECT_GT(l.metrics.E_rig, 0);
   // LSMDS keeps geodesics as Euclidean distances: the geodesic error is small.
