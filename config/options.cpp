@@ -171,13 +171,13 @@ Options load_options(const std::string& config_path,
 }
 
 void validate_options(const Options& o) {
-  require(o.method == "local_global" || o.method == "ceres", "method",
-          "must be local_global or ceres, got '" + o.method + "'");
+  require(o.method == "local_global" || o.method == "ceres" || o.method == "dpmu" ||
+              o.method == "lsmds",
+          "method", "must be local_global, ceres, dpmu or lsmds, got '" + o.method + "'");
   require(o.target_vertices == 0 || o.target_vertices >= 4, "simplify.target_vertices",
           "must be 0 (keep all) or at least 4");
   require(o.tet.route == "auto" || o.tet.route == "conforming" || o.tet.route == "robust",
-          "tetrahedralize.route",
-          "must be auto, conforming or robust, got '" + o.tet.route + "'");
+          "tetrahedralize.route", "must be auto, conforming or robust, got '" + o.tet.route + "'");
   require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),
           "tetrahedralize.quality", "must be 0 (off) or a finite number >= 1");
   require(std::isfinite(o.tet.max_volume) && o.tet.max_volume >= 0, "tetrahedralize.max_volume",
@@ -206,17 +206,27 @@ void validate_options(const Options& o) {
   const EnergyOptions& e = o.energy;
   require(std::isfinite(e.stretch_weight) && e.stretch_weight > 0, "stretch.weight",
           "must be a positive finite number");
-  require(std::isfinite(e.arap_weight) && e.arap_weight > 0, "arap.weight",
-          "must be a positive finite number");
+  require(std::isfinite(e.arap_weight) && e.arap_weight >= 0, "arap.weight",
+          "must be a finite number >= 0 (0 = off)");
+  require(std::isfinite(e.edge_length_weight) && e.edge_length_weight >= 0, "edge_length.weight",
+          "must be a finite number >= 0");
+  require(e.arap_weight > 0 || e.edge_length_weight > 0, "arap.weight",
+          "is 0 and so is edge_length.weight: nothing bounds the stretch term");
+  const bool ceres_backend = o.method == "ceres" || o.method == "dpmu";
+  require(e.edge_length_weight == 0 || ceres_backend, "edge_length.weight",
+          "needs method: ceres or dpmu (the edge-length term is not quadratic)");
+  require(o.method != "dpmu" || (e.arap_weight == 0 && e.edge_length_weight > 0), "method",
+          "dpmu needs arap.weight: 0 and edge_length.weight > 0 (see configs/dpmu.yaml)");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
           "must be uniform or cotangent, got '" + e.arap_weights + "'");
   require(std::isfinite(e.user_pairs_gamma) && e.user_pairs_gamma > 0, "user_pairs.gamma",
           "must be a positive finite number");
   require(std::isfinite(e.volume_weight) && e.volume_weight >= 0, "volume.weight",
           "must be a finite number >= 0");
-  require(e.volume_weight == 0 || o.method == "ceres", "volume.weight",
-          "needs method: ceres (the volume term is not quadratic)");
+  require(e.volume_weight == 0 || ceres_backend, "volume.weight",
+          "needs method: ceres or dpmu (the volume term is not quadratic)");
   validate_ceres_options(o.ceres);
+  validate_lsmds_options(o.lsmds);
 }
 
 std::string options_to_yaml(const Options& options) {

@@ -10,6 +10,7 @@
 #include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
 #include "solvers/ceres_backend.h"
+#include "solvers/lsmds.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -26,6 +27,7 @@ struct Options {
   CascadeOptions cascade;           ///< cascade.beta is derived from beta_mode / beta_value
   EnergyOptions energy;
   CeresOptions ceres;
+  LsmdsOptions lsmds;  ///< method: lsmds only
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;
   int threads = 0;

@@ -49,6 +49,14 @@ class EnergyTerm {
   virtual void add_linear(const Rotations& /*R*/, double /*scale*/, Eigen::MatrixX3d* /*B*/) const {
   }
 
+  /// Adds scale * the Hessian of the term's quadratic growth far from the rest
+  /// shape (acting alike on x, y, z): what bounds the concave stretch term,
+  /// so it sets the boundedness bound and the scale of beta. Quadratic terms
+  /// add H; non-quadratic terms that grow quadratically override.
+  virtual void add_growth_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const {
+    add_hessian(scale, H);
+  }
+
   /// Adds scale * an n x n positive semi-definite approximation of the term's
   /// Hessian (acting alike on x, y, z), used to precondition iterative solvers.
   /// Quadratic terms add H; others override.

@@ -3,6 +3,7 @@
 #include "core/errors.h"
 #include "energies/arap_energy.h"
 #include "energies/cotangent_weights.h"
+#include "energies/edge_length_energy.h"
 #include "energies/read_user_pairs.h"
 #include "energies/stretch_energy.h"
 #include "energies/user_pairs_energy.h"
@@ -22,7 +23,10 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
   else
     throw UsageError("config key 'arap.weights' must be uniform or cotangent, got '" +
                      options.arap_weights + "'");
-  terms.push_back(std::make_unique<ArapEnergy>(graph, tets.V, weights, options.arap_weight));
+  if (options.arap_weight > 0)
+    terms.push_back(std::make_unique<ArapEnergy>(graph, tets.V, weights, options.arap_weight));
+  if (options.edge_length_weight > 0)
+    terms.push_back(std::make_unique<EdgeLengthEnergy>(graph, tets.V, options.edge_length_weight));
   if (!options.user_pairs_file.empty())
     terms.push_back(std::make_unique<UserPairsEnergy>(
         read_user_pairs(options.user_pairs_file, tets.num_surface_vertices),

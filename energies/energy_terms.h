@@ -18,12 +18,14 @@ struct EnergyOptions {
   std::string user_pairs_file;           ///< pair constraints (Eq. 11); empty: none
   double user_pairs_gamma = 1.0;         ///< gamma relative to beta (paper: gamma = beta)
   double volume_weight = 0.0;            ///< tet volume term relative to beta; 0: off
+  double edge_length_weight = 0.0;       ///< edge-length springs relative to beta; 0: off
 };
 
 using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
 
-/// The terms enabled by `options` on a tet mesh: stretch, ARAP, and user pairs
-/// and volume when configured. The terms keep a reference to `graph`.
+/// The terms enabled by `options` on a tet mesh: stretch, and ARAP, edge
+/// lengths, user pairs and volume when configured (weight > 0, a pairs file). The terms keep a
+/// reference to `graph`.
 /// @throws UsageError for an unknown arap_weights, InputError for a bad pairs file
 EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
                               const EnergyOptions& options);

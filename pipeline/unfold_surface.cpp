@@ -9,6 +9,7 @@
 #include "mesh/edge_graph.h"
 #include "mesh/simplify_surface_mesh.h"
 #include "mesh/tet_volumes.h"
+#include "metrics/edge_ratio.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
@@ -16,6 +17,7 @@
 #include "solvers/ceres_backend.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
+#include "solvers/lsmds.h"
 
 namespace unfold {
 namespace {
@@ -64,61 +66,9 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
   return surface_only;
 }
 
-}  // namespace
-
-PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
-  validate_options(options);
-  PreparedMesh prepared;
-  const SurfaceReport report = check_surface_mesh(input, true);
-  // A tet mesh needs a closed surface. The robust route's winding number closes
-  // small holes (cat0 has 76 boundary edges in 83,606); larger ones leave no
-  // well-defined inside, and the conforming route needs none at all. The
-  // surface graph may stand in when allowed.
-  size_t num_sides = 0;
-  for (const auto& f : input.faces) num_sides += f.size();
-  const bool small_holes = options.tet.route != "conforming" &&
-                           size_t(report.num_boundary_edges) * 200 <= num_sides;
-  const bool open = report.num_boundary_edges > 0 && !small_holes;
-  if (open && !options.fallback_surface_graph)
-    throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
-                     " boundary edges); unfold needs a closed surface (with the auto and robust "
-                     "routes: at most 1% boundary edges; or tetrahedralize.fallback_surface_graph: "
-                     "true)");
-  prepared.warnings = report.warnings;
-  for (const auto& w : report.warnings) LOG(WARNING) << w;
-
-  if (options.target_vertices > 0 && options.target_vertices < input.V.rows()) {
-    prepared.surface = simplify_surface_mesh(input, options.target_vertices);
-    LOG(INFO) << "simplified " << input.V.rows() << " -> " << prepared.surface.V.rows()
-              << " vertices";
-    check_surface_mesh(prepared.surface);
-  } else {
-    prepared.surface = input;
-  }
-
-  prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options,
-                                              &prepared.tet_report, &prepared.warnings);
-  LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
-            << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
-            << " s";
-  return prepared;
-}
-
-UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options) {
-  validate_options(options);
-  UnfoldResult result;
-  result.surface = prepared.surface;
-  result.tets = prepared.tets;
-  result.tet_report = prepared.tet_report;
-  result.warnings = prepared.warnings;
-
-  const auto start = std::chrono::steady_clock::now();
-  const EdgeGraph graph = build_edge_graph(
-      int(result.tets.V.rows()), result.tets.T.rows() > 0
-                                     ? Eigen::MatrixXi(result.tets.T)
-                                     : Eigen::MatrixXi(triangulate_faces(result.surface)));
-  check_tet_graph(graph, result.tets.V);
-  result.num_edges = graph.num_edges();
+// The paper's method and the energy-term baselines: lambda_2, beta, the cascade.
+void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult* out) {
+  UnfoldResult& result = *out;
   UnfoldProblem problem;
   problem.graph = &graph;
   problem.rest = result.tets.V;
@@ -146,13 +96,93 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   cascade.beta = result.beta_start;
   std::unique_ptr<CascadeBackend> backend;
   int iterations_per_cascade = options.cascade.k_iter;
-  if (options.method == "ceres") {
+  if (options.method == "ceres" || options.method == "dpmu") {
     backend = std::make_unique<CeresBackend>(problem, options.ceres);
     iterations_per_cascade = options.ceres.max_num_iterations;
   } else {
     backend = std::make_unique<LocalGlobalBackend>(problem);
   }
   result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
+}
+
+// LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =
+// the stress (beta 0 in the history).
+CascadeResult lsmds_cascade_result(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                   const LsmdsOptions& options) {
+  CascadeResult c;
+  const LsmdsResult lsmds_result =
+      lsmds(graph, P, options, [&](int k, const Eigen::MatrixX3d& X, double stress) {
+        c.history.push_back({k, 1, 0.0, stress, edge_ratio(graph, P, X)});
+      });
+  c.positions = lsmds_result.positions;
+  c.iterations = lsmds_result.iterations;
+  c.cascades = 1;
+  c.final_energy = lsmds_result.stress.back();
+  c.edge_ratio = edge_ratio(graph, P, c.positions);
+  c.reached_band = true;  // no band applies
+  return c;
+}
+
+}  // namespace
+
+PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
+  validate_options(options);
+  PreparedMesh prepared;
+  const SurfaceReport report = check_surface_mesh(input, true);
+  // A tet mesh needs a closed surface. The robust route's winding number closes
+  // small holes (cat0 has 76 boundary edges in 83,606); larger ones leave no
+  // well-defined inside, and the conforming route needs none at all. The
+  // surface graph may stand in when allowed.
+  size_t num_sides = 0;
+  for (const auto& f : input.faces) num_sides += f.size();
+  const bool small_holes =
+      options.tet.route != "conforming" && size_t(report.num_boundary_edges) * 200 <= num_sides;
+  const bool open = report.num_boundary_edges > 0 && !small_holes;
+  if (open && !options.fallback_surface_graph)
+    throw InputError("the surface is open (" + std::to_string(report.num_boundary_edges) +
+                     " boundary edges); unfold needs a closed surface (with the auto and robust "
+                     "routes: at most 1% boundary edges; or tetrahedralize.fallback_surface_graph: "
+                     "true)");
+  prepared.warnings = report.warnings;
+  for (const auto& w : report.warnings) LOG(WARNING) << w;
+
+  if (options.target_vertices > 0 && options.target_vertices < input.V.rows()) {
+    prepared.surface = simplify_surface_mesh(input, options.target_vertices);
+    LOG(INFO) << "simplified " << input.V.rows() << " -> " << prepared.surface.V.rows()
+              << " vertices";
+    check_surface_mesh(prepared.surface);
+  } else {
+    prepared.surface = input;
+  }
+
+  prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options, &prepared.tet_report,
+                                              &prepared.warnings);
+  LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
+            << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
+            << " s";
+  return prepared;
+}
+
+UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options) {
+  validate_options(options);
+  UnfoldResult result;
+  result.surface = prepared.surface;
+  result.tets = prepared.tets;
+  result.tet_report = prepared.tet_report;
+  result.warnings = prepared.warnings;
+
+  const auto start = std::chrono::steady_clock::now();
+  const EdgeGraph graph = build_edge_graph(
+      int(result.tets.V.rows()), result.tets.T.rows() > 0
+                                     ? Eigen::MatrixXi(result.tets.T)
+                                     : Eigen::MatrixXi(triangulate_faces(result.surface)));
+  check_tet_graph(graph, result.tets.V);
+  result.num_edges = graph.num_edges();
+  if (options.method == "lsmds") {
+    result.cascade = lsmds_cascade_result(graph, result.tets.V, options.lsmds);
+  } else {
+    solve_cascade(graph, options, &result);
+  }
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +

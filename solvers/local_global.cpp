@@ -11,14 +11,15 @@
 namespace unfold {
 namespace {
 
-// Sum of weight * H over the quadratic terms with scales_with_beta == scaled,
+// Sum of weight * H (the growth Hessian: H for quadratic terms, which are all
+// local-global accepts) over the terms with scales_with_beta == scaled,
 // on the union pattern of all terms (explicit zeros kept, so A_fixed and
 // A_beta share one pattern and A = A_fixed + beta A_beta keeps it).
 Eigen::SparseMatrix<double> assemble(const UnfoldProblem& problem, bool scaled) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& term : problem.terms) {
     std::vector<Eigen::Triplet<double>> t;
-    term->add_hessian(term->weight(1.0), &t);
+    term->add_growth_hessian(term->weight(1.0), &t);
     for (const auto& x : t)
       triplets.emplace_back(x.row(), x.col(), term->scales_with_beta() == scaled ? x.value() : 0);
   }

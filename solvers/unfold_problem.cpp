@@ -33,8 +33,7 @@ void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, doub
 Eigen::SparseMatrix<double> beta_laplacian(const UnfoldProblem& problem) {
   std::vector<Eigen::Triplet<double>> triplets;
   for (const auto& term : problem.terms)
-    if (term->quadratic() && term->scales_with_beta())
-      term->add_hessian(0.5 * term->weight(1.0), &triplets);
+    if (term->scales_with_beta()) term->add_growth_hessian(0.5 * term->weight(1.0), &triplets);
   Eigen::SparseMatrix<double> L(problem.num_vertices(), problem.num_vertices());
   L.setFromTriplets(triplets.begin(), triplets.end());
   return L;

@@ -29,9 +29,9 @@ double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, con
 void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, double beta,
                    Rotations* R);
 
-/// Half the summed Hessians of the quadratic terms that scale with beta, at
-/// beta = 1: the Laplacian whose lambda_2 sets the scale of beta (for the
-/// paper's energy, the graph Laplacian L; docs/method.md).
+/// Half the summed growth Hessians (EnergyTerm::add_growth_hessian) of the terms that scale with
+/// beta, at beta = 1: the Laplacian whose lambda_2 sets the scale of beta (for the paper's energy,
+/// the graph Laplacian L; docs/method.md).
 Eigen::SparseMatrix<double> beta_laplacian(const UnfoldProblem& problem);
 
 }  // namespace unfold

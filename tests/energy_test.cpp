@@ -10,6 +10,7 @@
 
 #include "energies/arap_energy.h"
 #include "energies/cotangent_weights.h"
+#include "energies/edge_length_energy.h"
 #include "energies/row_major.h"
 #include "energies/stretch_energy.h"
 #include "energies/user_pairs_energy.h"
@@ -99,6 +100,35 @@ TEST(EnergyGradients, EveryTermMatchesFiniteDifferences) {
       ArapEnergy(s.graph, s.mesh.V, cotangent_weights(s.mesh.V, s.mesh.T, s.graph), 1.0), s.Q, s.R);
   expect_gradient_matches_finite_differences(UserPairsEnergy(s.pairs(), 1.0), s.Q, s.R);
   expect_gradient_matches_finite_differences(VolumeEnergy(s.mesh.V, s.mesh.T, 1.0), s.Q, s.R);
+  expect_gradient_matches_finite_differences(EdgeLengthEnergy(s.graph, s.mesh.V, 1.0), s.Q, s.R);
+}
+
+TEST(EnergyEdgeLength, ZeroForARigidMotionAndTwiceTheEdgeSumOtherwise) {
+  EnergySetup s;
+  const EdgeLengthEnergy term(s.graph, s.mesh.V, 1.0);
+  const Eigen::MatrixX3d moved =
+      (s.mesh.V * test::random_rotation(3).transpose()).rowwise() + Eigen::RowVector3d(1, 2, 3);
+  EXPECT_NEAR(term.evaluate(moved, s.R, 1.0, nullptr), 0, 1e-20);
+  double sum = 0;
+  for (int e = 0; e < s.graph.num_edges(); ++e) {
+    const int i = s.graph.edges(e, 0), j = s.graph.edges(e, 1);
+    const double d = (s.Q.row(i) - s.Q.row(j)).norm() - (s.mesh.V.row(i) - s.mesh.V.row(j)).norm();
+    sum += 2 * d * d;
+  }
+  EXPECT_NEAR(term.evaluate(s.Q, s.R, 1.0, nullptr), sum, 1e-10 * sum);
+}
+
+TEST(EnergyEdgeLength, GrowsLikeTheArapTermFarFromRest) {
+  // Far from rest e_l ~ tr(Q^T H Q) with H its growth Hessian (2 L), as for ARAP.
+  EnergySetup s;
+  const EdgeLengthEnergy term(s.graph, s.mesh.V, 1.0);
+  std::vector<Eigen::Triplet<double>> triplets;
+  term.add_growth_hessian(1.0, &triplets);
+  Eigen::SparseMatrix<double> H(s.n, s.n);
+  H.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::MatrixX3d far = 1e4 * s.Q;
+  const double quadratic = (far.transpose() * (H * far)).trace();
+  EXPECT_NEAR(term.evaluate(far, s.R, 1.0, nullptr) / quadratic, 1.0, 1e-3);
 }
 
 TEST(EnergyGradients, QuadraticTermsMatchTheLocalGlobalSystem) {

@@ -15,10 +15,10 @@
 #include "pipeline/metrics_json.h"
 #include "pipeline/unfold_surface.h"
 #include "solvers/cascade.h"
+#include "solvers/local_global.h"
 #include "test_files.h"
 #include "test_meshes.h"
 #include "test_problem.h"
-#include "solvers/local_global.h"
 
 namespace unfold {
 namespace {

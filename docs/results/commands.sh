@@ -1,0 +1,27 @@
+#!/bin/sh
+# The evaluation behind docs/results/README.md: TOSCA (wolf, centaur, cat) and
+# FAUST (tr_reg) in one dataset directory so retrieval ranks across all classes.
+# Run from the worktree root after building; outputs (meshes) go to $OUT, only
+# the tables and plots are committed.
+set -e
+DATA=${DATA:-../shared/data}
+OUT=${OUT:-/tmp/unfold_eval}
+mkdir -p "$OUT/dataset"
+for f in "$DATA"/tosca/*.off "$DATA"/faust/*.off; do ln -sf "$(realpath "$f")" "$OUT/dataset/"; done
+
+# Every method at the paper's resolution (surfaces simplified to ~2,000 vertices).
+build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
+  --configs configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml \
+  --target_vertices 2000 --jobs 2
+# Ours at full resolution.
+build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" \
+  --configs configs/default.yaml --jobs 2
+
+build/bin/unfold_report --runs "$OUT/2k,$OUT/full" --labels 2k,full \
+  --markdown docs/results/report.md --plots_dir docs/results
+cp "$OUT"/2k/results.csv docs/results/results_2k.csv
+cp "$OUT"/full/results.csv docs/results/results_full.csv
+for d in 2k full; do
+  for f in retrieval pose_invariance; do cp "$OUT/$d/$f.csv" "docs/results/${f}_$d.csv"; done
+  for f in "$OUT"/$d/similarity_*.csv; do cp "$f" "docs/results/${d}_$(basename "$f")"; done
+done

@@ -1,0 +1,43 @@
+#include "energies/edge_length_energy.h"
+
+#include "energies/jet_evaluation.h"
+#include "energies/row_major.h"
+
+namespace unfold {
+
+EdgeLengthEnergy::EdgeLengthEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
+                                   double weight)
+    : EnergyTerm(weight, true), graph_(graph), rest_length_(graph.num_edges()) {
+  for (int e = 0; e < graph.num_edges(); ++e)
+    rest_length_[e] = (rest.row(graph.edges(e, 0)) - rest.row(graph.edges(e, 1))).norm();
+}
+
+double EdgeLengthEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& /*R*/, double scale,
+                                  Eigen::MatrixX3d* grad) const {
+  const RowMatrixX3d q = Q;
+  RowMatrixX3d g;
+  if (grad) g.setZero(Q.rows(), 3);
+  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
+  double energy = 0;
+  for (int e = 0; e < graph_.num_edges(); ++e) {
+    const int i = graph_.edges(e, 0), j = graph_.edges(e, 1);
+    const std::array<double*, 2> gij = {at(i), at(j)};
+    energy += squared_norm<1, 2>(EdgeLengthResidual(rest_length_[e]),
+                                 {q.row(i).data(), q.row(j).data()}, scale, grad ? &gij : nullptr);
+  }
+  if (grad) *grad += g;
+  return energy;
+}
+
+void EdgeLengthEnergy::add_growth_hessian(double scale,
+                                          std::vector<Eigen::Triplet<double>>* H) const {
+  for (int e = 0; e < graph_.num_edges(); ++e) {
+    const int i = graph_.edges(e, 0), j = graph_.edges(e, 1);
+    H->emplace_back(i, i, 2.0 * scale);
+    H->emplace_back(j, j, 2.0 * scale);
+    H->emplace_back(i, j, -2.0 * scale);
+    H->emplace_back(j, i, -2.0 * scale);
+  }
+}
+
+}  // namespace unfold

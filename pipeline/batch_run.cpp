@@ -1,0 +1,478 @@
+#include "pipeline/batch_run.h"
+
+#include <fcntl.h>
+#include <glog/logging.h>
+#include <omp.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "config/options.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "mesh/mesh_format.h"
+#include "mesh/read_surface_mesh.h"
+#include "mesh/write_surface_mesh.h"
+#include "metrics/pose_invariance.h"
+#include "pipeline/metrics_json.h"
+#include "pipeline/unfold_surface.h"
+
+namespace unfold {
+namespace fs = std::filesystem;
+namespace {
+
+std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One CSV field: quoted when it holds a comma, quote or line break.
+std::string csv_field(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::string format_row(const BatchRow& r) {
+  std::ostringstream s;
+  s << std::setprecision(10) << csv_field(r.shape) << ',' << csv_field(r.shape_class) << ','
+    << csv_field(r.method) << ',' << r.E_rig << ',' << r.E_str << ',' << r.E_geo << ',' << r.seconds
+    << ',' << csv_field(r.status);
+  return s.str();
+}
+
+BatchRow parse_row(const std::string& line, const std::string& where) {
+  const std::vector<std::string> f = split_csv_line(line);
+  if (f.size() != 8)
+    throw InputError(where + ": expected 8 fields, got " + std::to_string(f.size()));
+  BatchRow r{f[0], f[1], f[2], 0, 0, 0, 0, f[7]};
+  try {
+    r.E_rig = std::stod(f[3]), r.E_str = std::stod(f[4]), r.E_geo = std::stod(f[5]);
+    r.seconds = std::stod(f[6]);
+  } catch (const std::exception&) {
+    throw InputError(where + ": a number field is not a number");
+  }
+  return r;
+}
+
+struct Layout {
+  std::string dir;
+  std::string file(const std::string& method, const std::string& shape,
+                   const std::string& suffix) const {
+    return dir + "/" + method + "/" + shape + suffix;
+  }
+};
+
+std::optional<BatchRow> read_row_file(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line)) return std::nullopt;
+  try {
+    return parse_row(line, path);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+// The preparation (simplify, tetrahedralize) depends on these keys only.
+std::string preparation_key(const Options& o) {
+  std::ostringstream s;
+  s << o.target_vertices << '|' << o.tet.route << '|' << std::setprecision(17) << o.tet.quality;
+  return s.str();
+}
+
+// Everything one child does for one shape: every config, each failure in its row.
+void run_shape(const std::string& mesh_path, const std::vector<Options>& options,
+               const std::vector<std::string>& methods, const Layout& out) {
+  const std::string shape = stem(mesh_path);
+  SurfaceMesh input;
+  std::string read_error;
+  try {
+    input = read_surface_mesh(mesh_path);
+  } catch (const std::exception& e) {
+    read_error = e.what();
+  }
+  std::map<std::string, PreparedMesh> prepared;
+  std::map<std::string, std::string> prepare_errors;
+  for (size_t k = 0; k < options.size(); ++k) {
+    BatchRow row{shape, shape_class(shape), methods[k], 0, 0, 0, 0, "ok"};
+    try {
+      if (!read_error.empty()) throw InputError(read_error);
+      const std::string key = preparation_key(options[k]);
+      if (prepare_errors.count(key)) throw NumericalError(prepare_errors[key]);
+      if (!prepared.count(key)) {
+        try {
+          prepared[key] = prepare_mesh(input, options[k]);
+        } catch (const std::exception& e) {
+          prepare_errors[key] = e.what();
+          throw;
+        }
+      }
+      const auto start = std::chrono::steady_clock::now();
+      const UnfoldResult r = unfold_prepared(prepared[key], options[k]);
+      row.seconds = seconds_since(start);
+      row.E_rig = r.metrics.E_rig, row.E_str = r.metrics.E_str, row.E_geo = r.metrics.E_geo;
+      write_surface_mesh(out.file(methods[k], shape, ".off"), r.canonical);
+      if (r.surface.V.rows() != input.V.rows())
+        write_surface_mesh(
+            out.file(methods[k], shape, ".on_input.off"),
+            {transfer_by_nearest_point(r.surface.V, r.canonical.V, input.V), input.faces});
+      write_metrics_json(out.file(methods[k], shape, ".json"), r, options[k]);
+    } catch (const std::exception& e) {
+      row.status = e.what();
+      LOG(ERROR) << shape << ", " << methods[k] << ": " << e.what();
+    }
+    write_file_atomically(out.file(methods[k], shape, ".row"),
+                          [&](std::ostream& s) { s << format_row(row) << '\n'; });
+  }
+}
+
+[[noreturn]] void run_child(const std::string& mesh_path, const std::vector<Options>& options,
+                            const std::vector<std::string>& methods, const Layout& out,
+                            int threads) {
+  const std::string log = out.dir + "/logs/" + stem(mesh_path) + ".log";
+  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
+  }
+  omp_set_num_threads(threads);
+  int code = 0;
+  try {
+    run_shape(mesh_path, options, methods, out);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    code = 1;
+  }
+  std::fflush(nullptr);
+  ::_exit(code);
+}
+
+std::string describe_exit(int status) {
+  if (WIFSIGNALED(status)) return "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
+  return "exited with code " + std::to_string(WEXITSTATUS(status)) + " without a result";
+}
+
+std::string format_duration(double seconds) {
+  std::ostringstream s;
+  const int total = int(seconds);
+  s << total / 60 << "m" << std::setw(2) << std::setfill('0') << total % 60 << "s";
+  return s.str();
+}
+
+class Progress {
+ public:
+  Progress(int total, bool enabled) : total_(total), enabled_(enabled && ::isatty(STDERR_FILENO)) {}
+  void update(int done, int running) {
+    if (!enabled_) return;
+    const int width = 30, filled = total_ > 0 ? width * done / total_ : width;
+    std::fprintf(stderr, "\r\033[K[%s%s] %d/%d shapes, %d running, %s",
+                 std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done,
+                 total_, running, format_duration(seconds_since(start_)).c_str());
+    std::fflush(stderr);
+  }
+  // A line above the bar.
+  void print(const std::string& line) {
+    if (enabled_) std::fprintf(stderr, "\r\033[K");
+    std::fprintf(stdout, "%s\n", line.c_str());
+    std::fflush(stdout);
+  }
+  void finish() {
+    if (enabled_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  int total_;
+  bool enabled_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+std::string shape_class(const std::string& shape) {
+  std::string c = shape;
+  while (!c.empty() && std::isdigit(static_cast<unsigned char>(c.back()))) c.pop_back();
+  while (!c.empty() && (c.back() == '_' || c.back() == '-')) c.pop_back();
+  return c.empty() ? shape : c;
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  const size_t slash = text.find('/');
+  int i = -1, n = 0;
+  try {
+    if (slash != std::string::npos) {
+      size_t used_i = 0, used_n = 0;
+      i = std::stoi(text.substr(0, slash), &used_i);
+      n = std::stoi(text.substr(slash + 1), &used_n);
+      if (used_i != slash || used_n != text.size() - slash - 1) n = 0;
+    }
+  } catch (const std::exception&) {
+    n = 0;
+  }
+  if (n < 1 || i < 0 || i >= n)
+    throw UsageError("--shard must be i/N with 0 <= i < N, got '" + text + "'");
+  return {i, n};
+}
+
+std::vector<std::string> list_meshes(const std::string& dir) {
+  std::vector<std::string> meshes;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file() && mesh_format_from_path(it->path().string()))
+      meshes.push_back(it->path().string());
+  if (ec) throw InputError("cannot read the input directory " + dir + ": " + ec.message());
+  if (meshes.empty()) throw InputError("no mesh (.off, .obj, .ply, .stl) in " + dir);
+  std::sort(meshes.begin(), meshes.end());
+  return meshes;
+}
+
+std::vector<BatchRow> run_batch(const BatchOptions& o) {
+  if (o.jobs < 1) throw UsageError("--jobs must be at least 1");
+  if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
+    throw UsageError("the shard must be i/N with 0 <= i < N");
+  if (o.configs.empty()) throw UsageError("--configs is required");
+  std::vector<Options> options;
+  std::vector<std::string> methods;
+  for (const auto& path : o.configs) {
+    options.push_back(load_options(path, o.overrides));
+    methods.push_back(stem(path));
+  }
+  if (std::set<std::string>(methods.begin(), methods.end()).size() != methods.size())
+    throw UsageError("two configs have the same file stem (the method name in results.csv)");
+  const std::vector<std::string> all = list_meshes(o.input_dir);
+  std::vector<std::string> meshes;
+  for (size_t k = 0; k < all.size(); ++k)
+    if (int(k % size_t(o.shard_count)) == o.shard_index) meshes.push_back(all[k]);
+
+  const Layout out{o.output_dir};
+  std::error_code ec;
+  fs::create_directories(out.dir + "/logs", ec);
+  for (const auto& m : methods) fs::create_directories(out.dir + "/" + m, ec);
+  if (ec) throw OutputError("cannot create " + out.dir + ": " + ec.message());
+
+  auto rows_of = [&](const std::string& mesh) {
+    std::vector<std::optional<BatchRow>> rows;
+    for (const auto& m : methods) rows.push_back(read_row_file(out.file(m, stem(mesh), ".row")));
+    return rows;
+  };
+  std::vector<std::string> todo;
+  for (const auto& mesh : meshes) {
+    bool done = o.skip_existing;
+    for (const auto& row : rows_of(mesh)) done = done && row && row->status == "ok";
+    if (done) continue;
+    for (const auto& m : methods)
+      for (const char* suffix : {".row", ".off", ".on_input.off", ".json"})
+        fs::remove(out.file(m, stem(mesh), suffix), ec);
+    todo.push_back(mesh);
+  }
+
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  std::map<pid_t, std::pair<std::string, std::chrono::steady_clock::time_point>> running;
+  std::map<std::string, std::string> exit_problems;
+  Progress progress(int(todo.size()), o.progress);
+  progress.print("unfold_batch: " + std::to_string(todo.size()) + " shapes to run (" +
+                 std::to_string(meshes.size() - todo.size()) + " kept), " +
+                 std::to_string(methods.size()) + " configs, " + std::to_string(o.jobs) + " jobs");
+  size_t next = 0;
+  int finished = 0;
+  while (next < todo.size() || !running.empty()) {
+    while (next < todo.size() && int(running.size()) < o.jobs) {
+      const std::string& mesh = todo[next++];
+      const int threads =
+          options.front().threads > 0 ? options.front().threads : std::max(1, cores / o.jobs);
+      std::fflush(nullptr);
+      const pid_t pid = ::fork();
+      if (pid < 0) throw NumericalError("fork failed for " + mesh);
+      if (pid == 0) run_child(mesh, options, methods, out, threads);
+      running[pid] = {mesh, std::chrono::steady_clock::now()};
+    }
+    progress.update(finished, int(running.size()));
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, 0);
+    if (pid < 0 || !running.count(pid)) continue;
+    const auto [mesh, start] = running[pid];
+    running.erase(pid);
+    ++finished;
+    if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+      exit_problems[mesh] = describe_exit(status);
+    std::ostringstream line;
+    line << std::left << std::setw(16) << stem(mesh) << std::right << std::fixed
+         << std::setprecision(1) << std::setw(7) << seconds_since(start) << " s ";
+    const auto rows = rows_of(mesh);
+    for (size_t k = 0; k < methods.size(); ++k)
+      line << " | " << methods[k] << " "
+           << (rows[k] ? std::to_string(int(rows[k]->seconds + 0.5)) + " s " +
+                             (rows[k]->status == "ok" ? "ok" : "FAILED")
+                       : "no result");
+    progress.print(line.str());
+  }
+  progress.update(finished, 0);
+  progress.finish();
+
+  std::vector<BatchRow> rows;
+  for (const auto& mesh : meshes) {
+    const auto found = rows_of(mesh);
+    for (size_t k = 0; k < methods.size(); ++k) {
+      const std::string shape = stem(mesh);
+      const auto problem = exit_problems.find(mesh);
+      rows.push_back(found[k] ? *found[k]
+                              : BatchRow{shape, shape_class(shape), methods[k], 0, 0, 0, 0,
+                                         problem != exit_problems.end()
+                                             ? "the shape's process " + problem->second
+                                             : "no result"});
+    }
+  }
+  if (o.shard_count == 1) {
+    write_results_csv(out.dir + "/results.csv", rows);
+    write_dataset_evaluation(out.dir, meshes, methods, o.retrieval);
+  } else {
+    LOG(INFO) << "shard " << o.shard_index << "/" << o.shard_count
+              << ": dataset-wide files are written by a final run without --shard "
+                 "(with --skip_existing)";
+  }
+  return rows;
+}
+
+void write_results_csv(const std::string& path, const std::vector<BatchRow>& rows) {
+  write_file_atomically(path, [&](std::ostream& s) {
+    s << "shape,class,method,E_rig,E_str,E_geo,seconds,status\n";
+    for (const auto& r : rows) s << format_row(r) << '\n';
+  });
+}
+
+std::vector<BatchRow> read_results_csv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read " + path);
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("shape,class,method,E_rig,E_str,E_geo,seconds,status", 0) != 0)
+    throw InputError(path + ": not a results.csv (header " + line + ")");
+  std::vector<BatchRow> rows;
+  for (int number = 2; std::getline(in, line); ++number)
+    if (!line.empty()) rows.push_back(parse_row(line, path + ":" + std::to_string(number)));
+  return rows;
+}
+
+void write_dataset_evaluation(const std::string& output_dir, const std::vector<std::string>& meshes,
+                              const std::vector<std::string>& methods,
+                              const RetrievalOptions& options) {
+  const Layout out{output_dir};
+  const size_t n = meshes.size();
+  std::vector<std::string> names(n), classes(n);
+  std::vector<SurfaceMesh> inputs(n);
+  std::vector<double> areas(n);
+  std::vector<bool> readable(n, true);  // an unreadable input is in no table (its rows say why)
+  for (size_t i = 0; i < n; ++i) {
+    names[i] = stem(meshes[i]);
+    classes[i] = shape_class(names[i]);
+    try {
+      inputs[i] = read_surface_mesh(meshes[i]);
+      areas[i] = surface_area(inputs[i]);
+    } catch (const InputError&) {
+      readable[i] = false;
+    }
+  }
+  // Per method: canonical forms (retrieval) and forms on the input vertices (pose).
+  std::vector<std::string> labels = {"raw"};
+  std::vector<std::vector<std::optional<Eigen::MatrixX3d>>> forms(1), on_input(1);
+  for (size_t i = 0; i < n; ++i) {
+    forms[0].emplace_back(readable[i] ? std::optional(inputs[i].V) : std::nullopt);
+    on_input[0].push_back(forms[0].back());
+  }
+  for (const auto& m : methods) {
+    labels.push_back(m);
+    forms.emplace_back(n);
+    on_input.emplace_back(n);
+    for (size_t i = 0; i < n; ++i) {
+      const auto row = read_row_file(out.file(m, names[i], ".row"));
+      if (!readable[i] || !row || row->status != "ok") continue;
+      const SurfaceMesh canonical = read_surface_mesh(out.file(m, names[i], ".off"));
+      forms.back()[i] = canonical.V;
+      const std::string carried = out.file(m, names[i], ".on_input.off");
+      if (fs::exists(carried))
+        on_input.back()[i] = read_surface_mesh(carried).V;
+      else if (canonical.V.rows() == inputs[i].V.rows())
+        on_input.back()[i] = canonical.V;
+    }
+  }
+
+  std::ostringstream retrieval, pose;
+  retrieval << "method,nn_accuracy\n";
+  pose << "class,method,pose_distance\n";
+  for (size_t m = 0; m < labels.size(); ++m) {
+    std::vector<size_t> have;
+    std::vector<Eigen::MatrixX3d> samples;
+    for (size_t i = 0; i < n; ++i)
+      if (forms[m][i]) {
+        have.push_back(i);
+        samples.push_back(retrieval_sample(*forms[m][i], options));
+      }
+    if (have.size() < 2) continue;
+    const Eigen::MatrixXd D = dissimilarity_matrix(samples, options);
+    std::vector<std::string> have_classes;
+    for (size_t i : have) have_classes.push_back(classes[i]);
+    retrieval << labels[m] << ',' << nearest_neighbor_accuracy(D, have_classes) << '\n';
+    write_file_atomically(output_dir + "/similarity_" + labels[m] + ".csv", [&](std::ostream& s) {
+      s << "shape";
+      for (size_t i : have) s << ',' << names[i];
+      s << '\n' << std::setprecision(8);
+      for (size_t a = 0; a < have.size(); ++a) {
+        s << names[have[a]];
+        for (size_t b = 0; b < have.size(); ++b) s << ',' << D(Eigen::Index(a), Eigen::Index(b));
+        s << '\n';
+      }
+    });
+  }
+  for (const std::string& c : std::set<std::string>(classes.begin(), classes.end()))
+    for (size_t m = 0; m < labels.size(); ++m) {
+      double sum = 0;
+      int pairs = 0;
+      for (size_t i = 0; i < n; ++i)
+        for (size_t j = i + 1; j < n; ++j)
+          if (classes[i] == c && classes[j] == c && on_input[m][i] && on_input[m][j] &&
+              inputs[i].V.rows() == inputs[j].V.rows()) {
+            sum += pose_distance(*on_input[m][i], *on_input[m][j], 0.5 * (areas[i] + areas[j]));
+            ++pairs;
+          }
+      if (pairs > 0) pose << c << ',' << labels[m] << ',' << sum / pairs << '\n';
+    }
+  write_file_atomically(output_dir + "/retrieval.csv",
+                        [&](std::ostream& s) { s << retrieval.str(); });
+  write_file_atomically(output_dir + "/pose_invariance.csv",
+                        [&](std::ostream& s) { s << pose.str(); });
+}
+
+}  // namespace unfold

@@ -1,0 +1,79 @@
+// Batch evaluation over a dataset: every mesh of a directory with every
+// config, one forked child process per shape (in parallel up to `jobs`, so a
+// crash or an abort in one shape cannot take the run down), per-shape outputs,
+// then results.csv, retrieval and pose invariance over the whole dataset
+// (docs/evaluation.md).
+//
+// Output layout in output_dir:
+//   <method>/<shape>.off           canonical surface (method = config stem)
+//   <method>/<shape>.on_input.off  the same carried to the input's vertices (simplified runs)
+//   <method>/<shape>.json          metrics JSON
+//   <method>/<shape>.row           this shape's results.csv row
+//   logs/<shape>.log               the child's log
+//   results.csv, retrieval.csv, pose_invariance.csv, similarity_<method>.csv
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "metrics/shape_retrieval.h"
+
+namespace unfold {
+
+struct BatchOptions {
+  std::string input_dir;
+  std::string output_dir;                        ///< created if missing
+  std::vector<std::string> configs;              ///< YAML paths; method = file stem
+  std::map<std::string, std::string> overrides;  ///< YAML path -> value, for every config
+  int jobs = 1;                                  ///< shapes run at once
+  int shard_index = 0;                           ///< run shapes k with k % shard_count == index
+  int shard_count = 1;                           ///< > 1: no dataset-wide files (collect later)
+  bool skip_existing = false;  ///< keep shapes whose rows all exist with status ok
+  bool progress = true;        ///< progress bar on stderr when it is a terminal
+  RetrievalOptions retrieval;
+};
+
+struct BatchRow {
+  std::string shape, shape_class, method;
+  double E_rig = 0, E_str = 0, E_geo = 0;
+  double seconds = 0;  ///< the solve and metrics (unfold_prepared), not the shared preparation
+  std::string status;  ///< "ok" or the error
+};
+
+/// The class of a shape: its name without trailing digits and then without
+/// trailing '_' or '-' ("cat3" -> "cat", "tr_reg_000" -> "tr_reg").
+std::string shape_class(const std::string& shape);
+
+/// "i/N" with 0 <= i < N. @throws UsageError otherwise
+std::pair<int, int> parse_shard(const std::string& text);
+
+/// The mesh files (known extensions) in dir, sorted by name.
+/// @throws InputError if dir cannot be read or holds no mesh
+std::vector<std::string> list_meshes(const std::string& dir);
+
+/// Runs the batch (see the file comment); failures are recorded as rows with
+/// their error and the run goes on.
+/// @return the rows of the shapes of this shard, in shape then config order
+/// @throws UsageError for bad options or configs (before any work),
+///         InputError for an unreadable input_dir, OutputError for output_dir
+std::vector<BatchRow> run_batch(const BatchOptions& options);
+
+/// Writes shape,class,method,E_rig,E_str,E_geo,seconds,status (atomically).
+/// @throws OutputError
+void write_results_csv(const std::string& path, const std::vector<BatchRow>& rows);
+
+/// Reads a file written by write_results_csv. @throws InputError
+std::vector<BatchRow> read_results_csv(const std::string& path);
+
+/// Retrieval (retrieval.csv: method,nn_accuracy; similarity_<method>.csv) and
+/// pose invariance (pose_invariance.csv: class,method,pose_distance) for the
+/// raw input poses and each method's canonical forms found in output_dir.
+/// @param meshes input mesh paths; methods the config stems
+/// Unreadable input meshes are left out. @throws OutputError
+void write_dataset_evaluation(const std::string& output_dir, const std::vector<std::string>& meshes,
+                              const std::vector<std::string>& methods,
+                              const RetrievalOptions& options);
+
+}  // namespace unfold

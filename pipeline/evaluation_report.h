@@ -1,0 +1,31 @@
+// Reports from batch runs (pipeline/batch_run.h): the per-class table of mean
+// metrics like the paper's Table 1, retrieval (Table 3) and pose invariance
+// tables in Markdown, and CDF plots of E_rig, E_str, E_geo like Fig. 6.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "pipeline/batch_run.h"
+
+namespace unfold {
+
+/// One batch output directory; a non-empty label is appended to its method
+/// names ("default@full") so runs of one config at two resolutions stay apart.
+struct ReportRun {
+  std::string output_dir;
+  std::string label;
+};
+
+/// The Markdown report: for each of E_rig, E_str, E_geo a table of means over
+/// the ok rows (classes x methods, with a row over all shapes), the failures,
+/// then retrieval.csv and pose_invariance.csv of each run as tables.
+/// @throws InputError for a missing or malformed results.csv
+std::string evaluation_report_markdown(const std::vector<ReportRun>& runs);
+
+/// Writes cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png into dir: per method,
+/// the distribution of the metric over the ok shapes.
+/// @throws InputError as above, OutputError when writing fails
+void write_cdf_plots(const std::vector<ReportRun>& runs, const std::string& dir);
+
+}  // namespace unfold

@@ -1,0 +1,158 @@
+// Evaluation: retrieval finds a rigidly moved and scaled copy at distance ~0
+// as its own nearest neighbour; pose distances; shape classes and shards; the
+// batch runner end to end (a failing shape recorded, the others run).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/errors.h"
+#include "mesh/write_surface_mesh.h"
+#include "metrics/pose_invariance.h"
+#include "metrics/shape_retrieval.h"
+#include "pipeline/batch_run.h"
+#include "pipeline/evaluation_report.h"
+#include "render/plot_cdf.h"
+#include "shapes/articulated_shape.h"
+#include "test_files.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+Eigen::MatrixX3d moved(const Eigen::MatrixX3d& V, double scale) {
+  return ((scale * V) * test::random_rotation(7).transpose()).rowwise() +
+         Eigen::RowVector3d(3, -1, 2);
+}
+
+TEST(Retrieval, AMovedScaledCopyMatchesItselfAndIsItsNearestNeighbour) {
+  const Eigen::MatrixX3d shape = make_articulated_shape(ShapePose::preset(0), 24).V;
+  Eigen::MatrixX3d other = test::uv_sphere(12, 16).V;
+  other.col(0) *= 2.5;  // an ellipsoid: distinct principal axes
+  const RetrievalOptions options;
+  const std::vector<Eigen::MatrixX3d> samples = {retrieval_sample(shape, options),
+                                                 retrieval_sample(moved(shape, 3.7), options),
+                                                 retrieval_sample(other, options)};
+  EXPECT_LT(shape_dissimilarity(samples[0], samples[1], options), 1e-9);
+  EXPECT_GT(shape_dissimilarity(samples[0], samples[2], options), 0.05);
+  const Eigen::MatrixXd D = dissimilarity_matrix(samples, options);
+  EXPECT_LT(D(0, 1), 1e-9);
+  EXPECT_EQ(D, D.transpose());
+  // Shapes 0 and 1 find each other; the ellipsoid's nearest is of the other class.
+  EXPECT_DOUBLE_EQ(nearest_neighbor_accuracy(D, {"a", "a", "b"}), 2.0 / 3.0);
+}
+
+TEST(Retrieval, NearestPointDistanceIsSymmetricAndZeroOnlyForTheSameSet) {
+  const Eigen::MatrixX3d A = test::uv_sphere(6, 8).V;
+  const Eigen::MatrixX3d B = A.rowwise() + Eigen::RowVector3d(0.1, 0, 0);
+  EXPECT_DOUBLE_EQ(nearest_point_distance(A, A), 0);
+  EXPECT_DOUBLE_EQ(nearest_point_distance(A, B), nearest_point_distance(B, A));
+  EXPECT_GT(nearest_point_distance(A, B), 0);
+}
+
+TEST(PoseInvariance, ZeroForARigidMotionAndScaledBySqrtArea) {
+  const SurfaceMesh s = test::uv_sphere(8, 12, 2.0);
+  const double area = surface_area(s);
+  EXPECT_NEAR(area, 4 * M_PI * 4, 0.1 * 4 * M_PI * 4);  // a coarse sphere of radius 2
+  EXPECT_NEAR(pose_distance(s.V, moved(s.V, 1.0), area), 0, 1e-12);
+  const Eigen::MatrixX3d shifted = s.V.rowwise() + Eigen::RowVector3d(0, 0, 0);
+  Eigen::MatrixX3d bumped = shifted;
+  bumped(0, 0) += 1.0;
+  EXPECT_GT(pose_distance(s.V, bumped, area), 0);
+  EXPECT_THROW(pose_distance(s.V, s.V, 0), UsageError);
+  EXPECT_EQ(transfer_by_nearest_point(s.V, 2 * s.V, s.V), 2 * s.V);
+}
+
+TEST(Batch, ShapeClassesAndShards) {
+  EXPECT_EQ(shape_class("cat3"), "cat");
+  EXPECT_EQ(shape_class("centaur12"), "centaur");
+  EXPECT_EQ(shape_class("tr_reg_000"), "tr_reg");
+  EXPECT_EQ(shape_class("wolf"), "wolf");
+  EXPECT_EQ(parse_shard("2/5"), std::make_pair(2, 5));
+  EXPECT_THROW(parse_shard("5/5"), UsageError);
+  EXPECT_THROW(parse_shard("1"), UsageError);
+  EXPECT_THROW(parse_shard("a/2"), UsageError);
+}
+
+TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
+  test::TempDir dir;
+  const std::string in = dir.file("in"), out = dir.file("out");
+  std::filesystem::create_directories(in);
+  write_surface_mesh(in + "/body0.off", make_articulated_shape(ShapePose::preset(0), 24));
+  write_surface_mesh(in + "/body1.off", make_articulated_shape(ShapePose::preset(1), 24));
+  test::write_bytes(in + "/broken2.off", "OFF\n3 1 0\n0 0 0\n");  // truncated
+  const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
+                              " --output_dir " + out + " --configs " + UNFOLD_SOURCE_DIR +
+                              "/configs/default.yaml," + UNFOLD_SOURCE_DIR +
+                              "/configs/lsmds.yaml --jobs 2 > " + dir.file("stdout") + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 6u);
+  int ok = 0;
+  for (const auto& r : rows) {
+    if (r.shape == "broken2") {
+      EXPECT_NE(r.status, "ok");
+      continue;
+    }
+    EXPECT_EQ(r.status, "ok") << r.shape << " " << r.method;
+    EXPECT_EQ(r.shape_class, "body");
+    EXPECT_GT(r.E_rig, 0);
+    ++ok;
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + r.method + "/" + r.shape + ".off"));
+    EXPECT_TRUE(std::filesystem::exists(out + "/" + r.method + "/" + r.shape + ".json"));
+  }
+  EXPECT_EQ(ok, 4);
+  std::ifstream retrieval(out + "/retrieval.csv"), pose(out + "/pose_invariance.csv");
+  std::stringstream r, p;
+  r << retrieval.rdbuf();
+  p << pose.rdbuf();
+  EXPECT_EQ(r.str().rfind("method,nn_accuracy\nraw,", 0), 0u) << r.str();
+  EXPECT_NE(r.str().find("\nlsmds,"), std::string::npos) << r.str();
+  EXPECT_NE(p.str().find("body,raw,"), std::string::npos) << p.str();
+  EXPECT_NE(p.str().find("body,default,"), std::string::npos) << p.str();
+  EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default.csv"));
+}
+
+}  // namespace
+}  // namespace unfold
+
+namespace unfold {
+namespace {
+
+TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
+  test::TempDir dir;
+  write_results_csv(dir.file("results.csv"),
+                    {{"cat0", "cat", "default", 0.5, 0.1, 0.2, 1.0, "ok"},
+                     {"cat1", "cat", "default", 0.7, 0.3, 0.4, 1.0, "ok"},
+                     {"cat0", "cat", "lsmds", 3.0, 0.2, 0.05, 2.0, "ok"},
+                     {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}});
+  test::write_bytes(dir.file("retrieval.csv"), "method,nn_accuracy\nraw,0.5\ndefault,1\n");
+  test::write_bytes(dir.file("pose_invariance.csv"),
+                    "class,method,pose_distance\ncat,raw,0.2\ncat,default,0.1\n");
+  const std::string dir_path = dir.file("");
+  const std::string md = evaluation_report_markdown({{dir_path, "2k"}});
+  EXPECT_NE(md.find("| cat | 0.6000 (2/2) | 3.0000 (1/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("cat1, lsmds@2k: no, it failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("| default@2k | 1.0000 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 0.2000 | 0.1000 |"), std::string::npos) << md;
+  write_cdf_plots({{dir_path, ""}}, dir_path);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("cdf_E_rig.png")));
+}
+
+TEST(Report, CdfPlotDrawsEachSeriesAndRefusesEmptyOnes) {
+  const Image image = plot_cdf({{"a", {0.1, 0.5, 0.9}}, {"b", {0.3}}}, "x");
+  int blue = 0, red = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      blue += image.at(x, y) == Rgb{31, 119, 180};
+      red += image.at(x, y) == Rgb{214, 39, 40};
+    }
+  EXPECT_GT(blue, 100);
+  EXPECT_GT(red, 100);
+  EXPECT_THROW(plot_cdf({{"a", {}}}, "x"), UsageError);
+  EXPECT_THROW(plot_cdf({}, "x"), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
