@@ -22,22 +22,16 @@ ArapEnergy::ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
 
 double ArapEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
                             Eigen::MatrixX3d* grad) const {
-  const int n = graph_.num_vertices;
-  const RowMatrixX3d q = Q;
-  RowMatrixX3d g;
-  if (grad) g.setZero(n, 3);
-  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
+  ResidualSum sum(Q, scale, grad);
   double energy = 0;
-  for (int i = 0; i < n; ++i)
+  for (int i = 0; i < graph_.num_vertices; ++i)
     for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k) {
       const int j = graph_.neighbors[size_t(k)];
       const double w = weights_[size_t(graph_.neighbor_edge[size_t(k)])];
-      const ArapEdgeResidual residual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose(), w);
-      const std::array<double*, 2> gij = {at(i), at(j)};
-      energy += squared_norm<3, 2>(residual, {q.row(i).data(), q.row(j).data()}, scale,
-                                   grad ? &gij : nullptr);
+      energy += sum.add<3, 2>(
+          ArapEdgeResidual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose(), w), {i, j});
     }
-  if (grad) *grad += g;
+  sum.finish();
   return energy;
 }
 

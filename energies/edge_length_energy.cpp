@@ -14,18 +14,12 @@ EdgeLengthEnergy::EdgeLengthEnergy(const EdgeGraph& graph, const Eigen::MatrixX3
 
 double EdgeLengthEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& /*R*/, double scale,
                                   Eigen::MatrixX3d* grad) const {
-  const RowMatrixX3d q = Q;
-  RowMatrixX3d g;
-  if (grad) g.setZero(Q.rows(), 3);
-  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
+  ResidualSum sum(Q, scale, grad);
   double energy = 0;
-  for (int e = 0; e < graph_.num_edges(); ++e) {
-    const int i = graph_.edges(e, 0), j = graph_.edges(e, 1);
-    const std::array<double*, 2> gij = {at(i), at(j)};
-    energy += squared_norm<1, 2>(EdgeLengthResidual(rest_length_[e]),
-                                 {q.row(i).data(), q.row(j).data()}, scale, grad ? &gij : nullptr);
-  }
-  if (grad) *grad += g;
+  for (int e = 0; e < graph_.num_edges(); ++e)
+    energy += sum.add<1, 2>(EdgeLengthResidual(rest_length_[e]),
+                            {graph_.edges(e, 0), graph_.edges(e, 1)});
+  sum.finish();
   return energy;
 }
 

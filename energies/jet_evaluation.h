@@ -6,8 +6,11 @@
 
 #include <ceres/jet.h>
 
+#include <Eigen/Core>
 #include <array>
 #include <utility>
+
+#include "energies/row_major.h"
 
 namespace unfold {
 
@@ -46,5 +49,38 @@ double squared_norm(const Functor& f, const std::array<const double*, K>& x, dou
   }
   return value;
 }
+
+/// Sums squared residuals of functors over vertex blocks of Q: what every
+/// term's evaluate() does. Holds the row-major copy of Q that the functors
+/// read and the gradient accumulated so far.
+class ResidualSum {
+ public:
+  /// @param scale multiplies the gradient added into *grad (not the value)
+  /// @param grad  n x 3, or null for values only
+  ResidualSum(const Eigen::MatrixX3d& Q, double scale, Eigen::MatrixX3d* grad)
+      : q_(Q), scale_(scale), grad_(grad) {
+    if (grad_) g_.setZero(Q.rows(), 3);
+  }
+  /// |f(q_v0, ..., q_vK-1)|^2; its gradient times scale * sign is accumulated.
+  template <int R, int K, typename Functor>
+  double add(const Functor& f, const std::array<int, K>& vertices, double sign = 1.0) {
+    std::array<const double*, K> x;
+    std::array<double*, K> g;
+    for (size_t k = 0; k < size_t(K); ++k) {
+      x[k] = q_.row(vertices[k]).data();
+      g[k] = grad_ ? g_.row(vertices[k]).data() : nullptr;
+    }
+    return squared_norm<R, K>(f, x, sign * scale_, grad_ ? &g : nullptr);
+  }
+  /// Adds the accumulated gradient into grad; call once, after the last add.
+  void finish() {
+    if (grad_) *grad_ += g_;
+  }
+
+ private:
+  RowMatrixX3d q_, g_;
+  double scale_;
+  Eigen::MatrixX3d* grad_;
+};
 
 }  // namespace unfold

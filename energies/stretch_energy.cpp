@@ -8,24 +8,14 @@ namespace unfold {
 double StretchEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& /*R*/, double scale,
                                Eigen::MatrixX3d* grad) const {
   const int n = graph_.num_vertices;
-  const RowMatrixX3d q = Q;
-  RowMatrixX3d g;
-  if (grad) g.setZero(n, 3);
-  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
+  ResidualSum sum(Q, scale, grad);
   const StretchSpreadResidual spread(Q.colwise().mean().transpose(), n);
   double energy = 0;
-  for (int i = 0; i < n; ++i) {
-    const std::array<double*, 1> gi = {at(i)};
-    energy -= squared_norm<3, 1>(spread, {q.row(i).data()}, -scale, grad ? &gi : nullptr);
-  }
+  for (int i = 0; i < n; ++i) energy -= sum.add<3, 1>(spread, {i}, -1.0);
   const StretchEdgeResidual edge;
-  for (int e = 0; e < graph_.num_edges(); ++e) {
-    const int i = graph_.edges(e, 0), j = graph_.edges(e, 1);
-    const std::array<double*, 2> gij = {at(i), at(j)};
-    energy +=
-        squared_norm<3, 2>(edge, {q.row(i).data(), q.row(j).data()}, scale, grad ? &gij : nullptr);
-  }
-  if (grad) *grad += g;
+  for (int e = 0; e < graph_.num_edges(); ++e)
+    energy += sum.add<3, 2>(edge, {graph_.edges(e, 0), graph_.edges(e, 1)});
+  sum.finish();
   return energy;
 }
 

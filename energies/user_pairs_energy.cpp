@@ -7,17 +7,10 @@ namespace unfold {
 
 double UserPairsEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& /*R*/, double scale,
                                  Eigen::MatrixX3d* grad) const {
-  const RowMatrixX3d q = Q;
-  RowMatrixX3d g;
-  if (grad) g.setZero(Q.rows(), 3);
-  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
+  ResidualSum sum(Q, scale, grad);
   double energy = 0;
-  for (const UserPair& p : pairs_) {
-    const std::array<double*, 2> gij = {at(p.i), at(p.j)};
-    energy += squared_norm<3, 2>(UserPairResidual(p.t), {q.row(p.i).data(), q.row(p.j).data()},
-                                 scale, grad ? &gij : nullptr);
-  }
-  if (grad) *grad += g;
+  for (const UserPair& p : pairs_) energy += sum.add<3, 2>(UserPairResidual(p.t), {p.i, p.j});
+  sum.finish();
   return energy;
 }
 

@@ -24,20 +24,12 @@ VolumeEnergy::VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i&
 
 double VolumeEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& /*R*/, double scale,
                               Eigen::MatrixX3d* grad) const {
-  const RowMatrixX3d q = Q;
-  RowMatrixX3d g;
-  if (grad) g.setZero(Q.rows(), 3);
-  auto at = [&](int v) { return grad ? g.data() + 3 * v : nullptr; };
+  ResidualSum sum(Q, scale, grad);
   double energy = 0;
-  for (Eigen::Index t = 0; t < T_.rows(); ++t) {
-    const int a = T_(t, 0), b = T_(t, 1), c = T_(t, 2), d = T_(t, 3);
-    const std::array<double*, 4> gt = {at(a), at(b), at(c), at(d)};
-    energy +=
-        squared_norm<1, 4>(VolumeResidual(rest_volume_[t], edge_scale_[t]),
-                           {q.row(a).data(), q.row(b).data(), q.row(c).data(), q.row(d).data()},
-                           scale, grad ? &gt : nullptr);
-  }
-  if (grad) *grad += g;
+  for (Eigen::Index t = 0; t < T_.rows(); ++t)
+    energy += sum.add<1, 4>(VolumeResidual(rest_volume_[t], edge_scale_[t]),
+                            {T_(t, 0), T_(t, 1), T_(t, 2), T_(t, 3)});
+  sum.finish();
   return energy;
 }
 
