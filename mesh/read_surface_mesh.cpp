@@ -224,15 +224,22 @@ SurfaceMesh read_off(std::istream& in, const std::string& path, std::uintmax_t f
   TextLines lines(in, path);
   Tokens t;
   if (!lines.next(&t)) fail(path, "the file is empty");
-  const std::string key(t[0]);
-  if (key.size() < 3 || key.compare(key.size() - 3, 3, "OFF") != 0)
-    lines.fail("no OFF header (found '" + key + "')");
+  std::string key(t[0]);
   if (key.find_first_of("4n") != std::string::npos)
     lines.fail("OFF variant '" + key + "' is not supported (only 3D positions)");
+  // Letters only: OpenMesh, which reads binary OFF, parses the header again
+  // and reads other counts after stray bytes (found by fuzzing).
+  if (key.size() < 3 || key.compare(key.size() - 3, 3, "OFF") != 0 ||
+      key.find_first_not_of("STCNOF") != std::string::npos) {
+    for (char& c : key)
+      if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+    lines.fail("no OFF header (found '" + key + "')");
+  }
   if (t.size() > 1 && t[1] == "BINARY") {
     int32_t counts[3];  // host byte order, as OpenMesh reads and writes it
-    if (!in.read(reinterpret_cast<char*>(counts), sizeof(counts)) || counts[0] < 0 || counts[1] < 0)
-      fail(path, "bad vertex and face counts in the binary OFF header");
+    if (t.size() != 2 || !in.read(reinterpret_cast<char*>(counts), sizeof(counts)) ||
+        counts[0] < 1 || counts[1] < 1)
+      fail(path, "bad header or vertex and face counts in the binary OFF header");
     check_declared_size(
         path, std::to_string(counts[0]) + " vertices and " + std::to_string(counts[1]) + " faces",
         12.0 * counts[0] + 16.0 * counts[1], file_size);
