@@ -83,6 +83,9 @@ class TextLines {
     return false;
   }
 
+  /// The whole current line, comments included.
+  const std::string& text() const { return text_; }
+
   [[noreturn]] void fail(const std::string& what) const {
     unfold::fail(path_, "line " + std::to_string(line_) + ": " + what);
   }
@@ -224,15 +227,22 @@ SurfaceMesh read_off(std::istream& in, const std::string& path, std::uintmax_t f
   TextLines lines(in, path);
   Tokens t;
   if (!lines.next(&t)) fail(path, "the file is empty");
-  const std::string key(t[0]);
-  if (key.size() < 3 || key.compare(key.size() - 3, 3, "OFF") != 0)
-    lines.fail("no OFF header (found '" + key + "')");
+  std::string key(t[0]);
   if (key.find_first_of("4n") != std::string::npos)
     lines.fail("OFF variant '" + key + "' is not supported (only 3D positions)");
+  // Letters only: OpenMesh, which reads binary OFF, parses the header again
+  // and reads other counts after stray bytes (found by fuzzing).
+  if (key.size() < 3 || key.compare(key.size() - 3, 3, "OFF") != 0 ||
+      key.find_first_not_of("STCNOF") != std::string::npos) {
+    for (char& c : key)
+      if (!std::isprint(static_cast<unsigned char>(c))) c = '?';
+    lines.fail("no OFF header (found '" + key + "')");
+  }
   if (t.size() > 1 && t[1] == "BINARY") {
     int32_t counts[3];  // host byte order, as OpenMesh reads and writes it
-    if (!in.read(reinterpret_cast<char*>(counts), sizeof(counts)) || counts[0] < 0 || counts[1] < 0)
-      fail(path, "bad vertex and face counts in the binary OFF header");
+    if (t.size() != 2 || !in.read(reinterpret_cast<char*>(counts), sizeof(counts)) ||
+        counts[0] < 1 || counts[1] < 1)
+      fail(path, "bad header or vertex and face counts in the binary OFF header");
     check_declared_size(
         path, std::to_string(counts[0]) + " vertices and " + std::to_string(counts[1]) + " faces",
         12.0 * counts[0] + 16.0 * counts[1], file_size);
@@ -399,9 +409,12 @@ SurfaceMesh read_ply(std::istream& in, const std::string& path, std::uintmax_t f
   std::vector<PlyElement> elements;
   for (;;) {
     if (!lines.next(&t)) fail(path, "the PLY header has no end_header");
+    // OpenMesh parses the header again, has no '#' comments and loops forever
+    // on some non-text bytes (found by fuzzing): the header must be plain text
+    // that both read alike.
+    if (t[0] != "comment" && t[0] != "obj_info" && lines.text().find('#') != std::string::npos)
+      lines.fail("'#' in the PLY header");
     if (t[0] == "end_header") break;
-    // OpenMesh parses the header again and loops forever on some non-text
-    // bytes in it (found by fuzzing), so the header must be plain text.
     for (const std::string_view token : t)
       for (const char c : token)
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e)

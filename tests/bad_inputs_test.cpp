@@ -154,6 +154,10 @@ const std::vector<BadInput>& cases() {
        "bad vertex count"},  // found by fuzzing: OpenMesh allocated 8 GB
       {"ply_binary_header_garbage", input("binary_header_garbage.ply"), 3,
        "non-text byte in the PLY header"},  // found by fuzzing: OpenMesh looped forever
+      {"off_binary_header_garbage", input("binary_header_garbage.off"), 3,
+       "no OFF header (found 'OFF?OFF')"},  // found by fuzzing: OpenMesh allocated 3 GB
+      {"ply_binary_header_hash", input("binary_header_hash.ply"), 3,
+       "'#' in the PLY header"},  // found by fuzzing: OpenMesh looped forever
       // Huge declared counts with little data: refused before allocating.
       {"off_huge_counts", input("huge_counts.off"), 3, "declares 2000000000 vertices"},
       {"ply_huge_counts", input("huge_counts.ply"), 3, "declares 1000000000 vertices"},
