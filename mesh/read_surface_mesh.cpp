@@ -240,8 +240,10 @@ SurfaceMesh read_off(std::istream& in, const std::string& path, std::uintmax_t f
   }
   if (t.size() > 1 && t[1] == "BINARY") {
     int32_t counts[3];  // host byte order, as OpenMesh reads and writes it
-    if (t.size() != 2 || !in.read(reinterpret_cast<char*>(counts), sizeof(counts)) ||
-        counts[0] < 1 || counts[1] < 1)
+    // Exactly as OpenMesh expects it, or it reads the body as text (fuzzing).
+    const std::string& header = lines.text();
+    if ((header != key + " BINARY" && header != key + " BINARY\r") ||
+        !in.read(reinterpret_cast<char*>(counts), sizeof(counts)) || counts[0] < 1 || counts[1] < 1)
       fail(path, "bad header or vertex and face counts in the binary OFF header");
     check_declared_size(
         path, std::to_string(counts[0]) + " vertices and " + std::to_string(counts[1]) + " faces",

@@ -158,6 +158,8 @@ const std::vector<BadInput>& cases() {
        "no OFF header (found 'OFF?OFF')"},  // found by fuzzing: OpenMesh allocated 3 GB
       {"ply_binary_header_hash", input("binary_header_hash.ply"), 3,
        "'#' in the PLY header"},  // found by fuzzing: OpenMesh looped forever
+      {"off_binary_header_carriage_return", input("binary_header_cr.off"), 3,
+       "bad header or vertex and face counts"},  // found by fuzzing: OpenMesh read it as text
       // Huge declared counts with little data: refused before allocating.
       {"off_huge_counts", input("huge_counts.off"), 3, "declares 2000000000 vertices"},
       {"ply_huge_counts", input("huge_counts.ply"), 3, "declares 1000000000 vertices"},
