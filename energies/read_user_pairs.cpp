@@ -20,9 +20,11 @@ UserPair make_pair(const double (&v)[5], int num_vertices, const std::string& wh
   for (double x : v)
     if (!std::isfinite(x)) throw InputError(where + ": non-finite value");
   for (int k = 0; k < 2; ++k)
-    if (v[k] != std::floor(v[k]) || v[k] < 0 || v[k] >= num_vertices)
-      throw InputError(where + ": vertex index " + std::to_string(v[k]) + " is not in [0, " +
-                       std::to_string(num_vertices) + ")");
+    if (v[k] != std::floor(v[k]) || v[k] < 0 || v[k] >= num_vertices) {
+      std::ostringstream what;
+      what << where << ": vertex index " << v[k] << " is not in [0, " << num_vertices << ")";
+      throw InputError(what.str());
+    }
   UserPair p;
   p.i = int(v[0]);
   p.j = int(v[1]);

@@ -184,6 +184,20 @@ const std::vector<BadInput>& cases() {
       {"overflowing_beta",
        input("open_surface.off", "--fallback_surface_graph true --beta_mode absolute --beta 1e308"),
        4, "factorizing the global matrix failed at beta = 1e+308"},
+      {"user_pairs_out_of_range",
+       [] {
+         return "--input " + corpus("nonmanifold_edge.off") + " --user_pairs " +
+                corpus("pairs_out_of_range.csv");
+       },
+       3, "vertex index 99999 is not in [0, "},
+      {"user_pairs_short_row",
+       [] {
+         return "--input " + corpus("nonmanifold_edge.off") + " --user_pairs " +
+                corpus("pairs_short_row.csv");
+       },
+       3, "line 2: expected i, j, tx, ty, tz"},
+      {"user_pairs_missing", input("nonmanifold_edge.off", "--user_pairs /nonexistent/p.csv"), 3,
+       "cannot read user pairs file '/nonexistent/p.csv'"},
       // Bad configuration files and flags.
       {"config_missing", flags("--config /nonexistent/c.yaml"), 2, "/nonexistent/c.yaml"},
       {"config_invalid_yaml", config("invalid_yaml.yaml"), 2, "invalid YAML"},
