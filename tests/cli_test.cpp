@@ -1,6 +1,7 @@
 // The unfold command line: outputs on success; on failure a one-line error,
 // the exit code of its class and no output file.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -19,7 +20,8 @@ using test::file_exists;
 using test::run_unfold;
 
 std::string temp(const std::string& name) {
-  const std::string path = ::testing::TempDir() + name;
+  // The process id keeps parallel test runs (two checkouts on one machine) apart.
+  const std::string path = ::testing::TempDir() + "cli_" + std::to_string(getpid()) + "_" + name;
   std::remove(path.c_str());
   return path;
 }
