@@ -440,6 +440,12 @@ SurfaceMesh read_ply(std::istream& in, const std::string& path, std::uintmax_t f
       lines.fail("unexpected PLY header line starting with '" + std::string(t[0]) + "'");
     }
   }
+  // An element without properties takes no bytes, so the size check below
+  // cannot bound its count (OpenMesh then adds them all: found by fuzzing).
+  for (const auto& e : elements)
+    if (e.count > 0 && e.properties.empty())
+      fail(path, "the PLY element '" + e.name + "' has " + std::to_string(e.count) +
+                     " records but no properties");
   const bool ascii = format == "ascii";
   if (!ascii && format != "binary_little_endian" && format != "binary_big_endian")
     fail(path, "unknown PLY format '" + format + "'");

@@ -160,6 +160,8 @@ const std::vector<BadInput>& cases() {
        "'#' in the PLY header"},  // found by fuzzing: OpenMesh looped forever
       {"off_binary_header_carriage_return", input("binary_header_cr.off"), 3,
        "bad header or vertex and face counts"},  // found by fuzzing: OpenMesh read it as text
+      {"ply_binary_element_without_properties", input("binary_no_properties.ply"), 3,
+       "has 500000000 records but no properties"},  // found by fuzzing: OpenMesh took minutes
       // Huge declared counts with little data: refused before allocating.
       {"off_huge_counts", input("huge_counts.off"), 3, "declares 2000000000 vertices"},
       {"ply_huge_counts", input("huge_counts.ply"), 3, "declares 1000000000 vertices"},
