@@ -34,6 +34,18 @@
   X(beta_growth, "cascade.growth", cascade.growth, "beta factor from one cascade to the next")  \
   X(edge_ratio_band, "cascade.edge_ratio_band", cascade.edge_ratio_band,                        \
     "stop when the mean edge-length ratio is inside [low, high]")                               \
+  X(linear_solver, "linear_solver.method", linear_solver.method,                                \
+    "global step: direct (sparse LDL^T), iterative (AMG-preconditioned CG) or auto "            \
+    "(iterative from linear_solver.iterative_from tet vertices on)")                             \
+  X(iterative_from, "linear_solver.iterative_from", linear_solver.iterative_from,               \
+    "auto: the iterative solver from this many tet vertices on")                                \
+  X(cg_tolerance, "linear_solver.cg_tolerance", linear_solver.cg_tolerance,                     \
+    "iterative: relative residual each global step reaches")                                    \
+  X(cg_forcing, "linear_solver.cg_forcing", linear_solver.cg_forcing,                         \
+    "iterative: or each global step reduces its warm start's residual by this factor "          \
+    "(0: always cg_tolerance)")                                                                 \
+  X(cg_max_iterations, "linear_solver.cg_max_iterations", linear_solver.cg_max_iterations,      \
+    "iterative: CG iterations per global step at most")                                         \
   X(stretch_weight, "stretch.weight", energy.stretch_weight,                                    \
     "weight k of the stretch term (paper: 1)")                                                  \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")  \

@@ -225,6 +225,7 @@ void validate_options(const Options& o) {
           "must be a finite number >= 0");
   require(e.volume_weight == 0 || ceres_backend, "volume.weight",
           "needs method: ceres or dpmu (the volume term is not quadratic)");
+  validate_linear_solver_options(o.linear_solver);
   validate_ceres_options(o.ceres);
   validate_lsmds_options(o.lsmds);
 }

@@ -10,6 +10,7 @@
 #include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
 #include "solvers/ceres_backend.h"
+#include "solvers/local_global.h"
 #include "solvers/lsmds.h"
 #include "tetra/tetrahedralize.h"
 
@@ -23,8 +24,9 @@ struct Options {
   std::string components = "refuse";    ///< several components: "refuse" or "separately"
   std::string beta_mode = "relative";
   double beta_value = 1.5;
-  bool raise_beta_to_bound = true;  ///< a starting beta below the bound is raised above it
-  CascadeOptions cascade;           ///< cascade.beta is derived from beta_mode / beta_value
+  bool raise_beta_to_bound = true;    ///< a starting beta below the bound is raised above it
+  CascadeOptions cascade;             ///< cascade.beta is derived from beta_mode / beta_value
+  LinearSolverOptions linear_solver;  ///< the global step's solver (method local_global)
   EnergyOptions energy;
   CeresOptions ceres;
   LsmdsOptions lsmds;  ///< method: lsmds only

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "energies/energy_term.h"
+#include "energies/row_major.h"
 #include "mesh/edge_graph.h"
 
 namespace unfold {
@@ -53,9 +54,12 @@ class ArapEnergy : public EnergyTerm {
 
  private:
   const EdgeGraph& graph_;
-  Eigen::MatrixX3d rest_;
+  RowMatrixX3d rest_;
   std::vector<double> weights_;
-  Eigen::MatrixX3d weighted_laplacian_rest_;  ///< (L_w P)_i = sum_j w_ij (p_i - p_j)
+  // The local and global steps sweep every cell each iteration: they read
+  // these, laid out in the graph's CSR order, instead of gathering from rest_.
+  RowMatrixX3d weighted_edges_;           ///< per CSR entry k of cell i: w_ij (p_i - p_j)
+  RowMatrixX3d weighted_laplacian_rest_;  ///< (L_w P)_i = sum_j w_ij (p_i - p_j)
 };
 
 }  // namespace unfold

@@ -46,11 +46,13 @@ GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
 
   // Per-row sums of D'^2, G^2 and D'G, added in row order afterwards.
   std::vector<Eigen::Vector3d> row(sources.size());
+  const NeighborLengths lengths = neighbor_lengths(graph, P);
   bool disconnected = false;
 #pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
   for (int s = 0; s < int(sources.size()); ++s) {
     const int i = sources[size_t(s)];
-    const std::vector<double> g = graph_geodesics(graph, P, i);
+    std::vector<double> g;
+    graph_geodesics(graph, lengths, i, &g);
     Eigen::Vector3d sums = Eigen::Vector3d::Zero();
     for (int j = 0; j < n; ++j) {
       if (std::isinf(g[size_t(j)])) disconnected = true;

@@ -1,39 +1,119 @@
 #include "metrics/graph_geodesics.h"
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <string>
 #include <utility>
 
 #include "core/errors.h"
 
 namespace unfold {
+namespace {
 
-std::vector<double> graph_geodesics(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int source) {
-  if (P.rows() != graph.num_vertices)
-    throw UsageError("graph_geodesics: P needs one row per graph vertex");
-  if (source < 0 || source >= graph.num_vertices)
-    throw UsageError("graph_geodesics: source " + std::to_string(source) + " out of range");
-  std::vector<double> dist(size_t(graph.num_vertices), std::numeric_limits<double>::infinity());
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+void heap_dijkstra(const EdgeGraph& graph, const std::vector<double>& length, int source,
+                   std::vector<double>* distance) {
+  std::vector<double>& dist = *distance;
+  // Lazy deletion: a popped entry whose vertex has since got closer is skipped.
   using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  dist[size_t(source)] = 0;
-  queue.emplace(0.0, source);
-  while (!queue.empty()) {
-    const auto [d, i] = queue.top();
-    queue.pop();
-    if (d > dist[size_t(i)]) continue;  // stale entry: i was reached more cheaply
+  std::vector<Entry> heap;
+  heap.reserve(size_t(graph.num_vertices));
+  const auto later = std::greater<Entry>();
+  heap.emplace_back(0.0, source);
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), later);
+    const auto [d, i] = heap.back();
+    heap.pop_back();
+    if (d > dist[size_t(i)]) continue;
     for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
       const int j = graph.neighbors[size_t(k)];
-      const double candidate = d + (P.row(i) - P.row(j)).norm();
+      const double candidate = d + length[size_t(k)];
       if (candidate < dist[size_t(j)]) {
         dist[size_t(j)] = candidate;
-        queue.emplace(candidate, j);
+        heap.emplace_back(candidate, j);
+        std::push_heap(heap.begin(), heap.end(), later);
       }
     }
   }
-  return dist;
+}
+
+// Dial's buckets of width `width` <= the shortest length, kept in a ring: a
+// vertex is pushed into the bucket of its new distance (never one already
+// passed) and relaxes its neighbours when its bucket comes up, once per
+// distance it has (so a rounding-level late improvement is still propagated).
+void bucket_dijkstra(const EdgeGraph& graph, const std::vector<double>& length, double width,
+                     size_t ring, int source, std::vector<double>* distance) {
+  std::vector<double>& dist = *distance;
+  std::vector<double> relaxed_at(dist.size(), -1.0);
+  std::vector<std::vector<int>> buckets(ring);
+  buckets[0].push_back(source);
+  size_t pending = 1;
+  for (size_t current = 0; pending > 0; ++current) {
+    std::vector<int>& bucket = buckets[current % ring];
+    for (size_t e = 0; e < bucket.size(); ++e) {  // the bucket may grow meanwhile
+      --pending;
+      const int i = bucket[e];
+      const double d = dist[size_t(i)];
+      if (relaxed_at[size_t(i)] == d) continue;
+      relaxed_at[size_t(i)] = d;
+      for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
+        const int j = graph.neighbors[size_t(k)];
+        const double candidate = d + length[size_t(k)];
+        if (candidate < dist[size_t(j)]) {
+          dist[size_t(j)] = candidate;
+          const size_t b = std::max(current, size_t(candidate / width));
+          buckets[b % ring].push_back(j);
+          ++pending;
+        }
+      }
+    }
+    bucket.clear();
+  }
+}
+
+}  // namespace
+
+NeighborLengths neighbor_lengths(const EdgeGraph& graph, const Eigen::MatrixX3d& P) {
+  if (P.rows() != graph.num_vertices)
+    throw UsageError("graph_geodesics: P needs one row per graph vertex");
+  NeighborLengths result;
+  result.length.resize(graph.neighbors.size());
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < graph.num_vertices; ++i)
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+      result.length[size_t(k)] = (P.row(i) - P.row(graph.neighbors[size_t(k)])).norm();
+  if (!result.length.empty()) {
+    const auto [shortest, longest] =
+        std::minmax_element(result.length.begin(), result.length.end());
+    result.shortest = *shortest;
+    result.longest = *longest;
+  }
+  return result;
+}
+
+void graph_geodesics(const EdgeGraph& graph, const NeighborLengths& lengths, int source,
+                     std::vector<double>* distance) {
+  if (lengths.length.size() != graph.neighbors.size())
+    throw UsageError("graph_geodesics: need one length per neighbour entry");
+  if (source < 0 || source >= graph.num_vertices)
+    throw UsageError("graph_geodesics: source " + std::to_string(source) + " out of range");
+  distance->assign(size_t(graph.num_vertices), kInfinity);
+  (*distance)[size_t(source)] = 0;
+  // A vertex's new bucket is at most longest / shortest + 1 ahead of the current one.
+  const double span = lengths.longest / lengths.shortest;
+  if (lengths.shortest > 0 && std::isfinite(span) && span < 4.0 * graph.num_vertices)
+    bucket_dijkstra(graph, lengths.length, lengths.shortest, size_t(span) + 3, source, distance);
+  else
+    heap_dijkstra(graph, lengths.length, source, distance);
+}
+
+std::vector<double> graph_geodesics(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int source) {
+  std::vector<double> distance;
+  graph_geodesics(graph, neighbor_lengths(graph, P), source, &distance);
+  return distance;
 }
 
 }  // namespace unfold

@@ -8,11 +8,29 @@
 
 namespace unfold {
 
-/// Single-source Dijkstra in the graph with Euclidean edge lengths |p_i - p_j|.
-/// @param P      positions (n x 3), n = graph.num_vertices
-/// @param source vertex in [0, n)
-/// @return distance to every vertex; +infinity where unreachable
-/// @throws UsageError if P has the wrong size or source is out of range
+/// The Euclidean length |p_i - p_j| of every CSR neighbour entry of a graph
+/// (in graph.neighbors order): computed once, shared by many Dijkstra runs.
+struct NeighborLengths {
+  std::vector<double> length;
+  double shortest = 0;  ///< over all entries (0 for a graph without edges)
+  double longest = 0;
+};
+
+/// @throws UsageError if P has the wrong size
+NeighborLengths neighbor_lengths(const EdgeGraph& graph, const Eigen::MatrixX3d& P);
+
+/// Single-source shortest paths with the given lengths. Dijkstra with a
+/// bucket queue of width shortest (Dial): no two vertices of one bucket can
+/// improve each other, so the result is exact, in O(m + n + max distance /
+/// shortest); a binary heap when the lengths are too uneven for buckets.
+/// @param lengths  neighbor_lengths(graph, P)
+/// @param source   vertex in [0, n)
+/// @param distance resized to n: the distance to every vertex, +infinity where unreachable
+/// @throws UsageError if lengths has the wrong size or source is out of range
+void graph_geodesics(const EdgeGraph& graph, const NeighborLengths& lengths, int source,
+                     std::vector<double>* distance);
+
+/// The same with Euclidean edge lengths |p_i - p_j| from positions P (n x 3).
 std::vector<double> graph_geodesics(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int source);
 
 }  // namespace unfold

@@ -63,6 +63,12 @@ void write_metrics_json(const std::string& path, const UnfoldResult& r, const Op
         << "  \"tet_vertices\": " << r.tets.V.rows() << ",\n"
         << "  \"tets\": " << r.tets.T.rows() << ",\n"
         << "  \"edges\": " << r.num_edges << ",\n"
+        << "  \"linear_solver\": {\"method\": " << quoted(r.linear_solver)
+        << ", \"amg_levels\": " << r.amg_levels << ", \"cg_solves\": " << r.cg.solves
+        << ", \"cg_iterations\": " << r.cg.iterations
+        << ", \"cg_unconverged_solves\": " << r.cg.unconverged_solves
+        << ", \"cg_worst_relative_residual\": " << number(r.cg.worst_relative_residual)
+        << ", \"seconds_amg\": " << number(r.seconds_amg) << "},\n"
         << "  \"tetrahedralization\": {\"route\": " << quoted(r.tet_report.route)
         << ", \"tets\": " << r.tet_report.num_tets
         << ", \"interior_points\": " << r.tet_report.num_interior_points

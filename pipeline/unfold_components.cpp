@@ -72,6 +72,7 @@ UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Opti
   merged.tet_canonical.resize(num_tet_vertices, 3);
   merged.tet_report.route = parts.front().tet_report.route;
   merged.lambda2 = parts.front().lambda2;
+  merged.linear_solver = parts.front().linear_solver;
   merged.beta_requested = merged.beta_start = parts.front().beta_start;
   merged.warnings.push_back(std::to_string(parts.size()) +
                             " connected components unfolded separately");
@@ -105,6 +106,14 @@ UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Opti
     merged.beta_start = std::min(merged.beta_start, r.beta_start);
     merged.beta_raised = merged.beta_raised || r.beta_raised;
     merged.seconds_unfold += r.seconds_unfold;
+    if (r.linear_solver != merged.linear_solver) merged.linear_solver = "mixed";
+    merged.amg_levels = std::max(merged.amg_levels, r.amg_levels);
+    merged.seconds_amg += r.seconds_amg;
+    merged.cg.solves += r.cg.solves;
+    merged.cg.iterations += r.cg.iterations;
+    merged.cg.unconverged_solves += r.cg.unconverged_solves;
+    merged.cg.worst_relative_residual =
+        std::max(merged.cg.worst_relative_residual, r.cg.worst_relative_residual);
     for (const auto& w : r.warnings)
       merged.warnings.push_back("component " + std::to_string(c + 1) + ": " + w);
 

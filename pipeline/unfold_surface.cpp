@@ -8,6 +8,7 @@
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
 #include "mesh/simplify_surface_mesh.h"
+#include "mesh/sort_interior_vertices.h"
 #include "mesh/tet_volumes.h"
 #include "metrics/edge_ratio.h"
 #include "metrics/geodesic_error.h"
@@ -74,7 +75,20 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
   problem.rest = result.tets.V;
   problem.terms = make_energy_terms(result.tets, graph, options.energy);
   const int n = graph.num_vertices;
-  result.lambda2 = fiedler_value(beta_laplacian(problem));
+  // The iterative solver's AMG hierarchy serves lambda_2 and every global step.
+  const Eigen::SparseMatrix<double> L = beta_laplacian(problem);
+  std::shared_ptr<AmgData> amg;
+  result.linear_solver = use_iterative_solver(options.linear_solver, n) ? "iterative" : "direct";
+  if (result.linear_solver == "iterative") {
+    const auto amg_start = std::chrono::steady_clock::now();
+    amg = std::make_shared<AmgData>();
+    amg_precomputation(L, AmgOptions{}, amg.get());
+    result.amg_levels = int(amg->levels.size());
+    result.seconds_amg = seconds_since(amg_start);
+    result.lambda2 = fiedler_value(L, *amg);
+  } else {
+    result.lambda2 = fiedler_value(L);
+  }
   const double bound = n / result.lambda2;
   result.beta_requested =
       options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
@@ -94,15 +108,22 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
             << ", method " << options.method;
   CascadeOptions cascade = options.cascade;
   cascade.beta = result.beta_start;
-  std::unique_ptr<CascadeBackend> backend;
   int iterations_per_cascade = options.cascade.k_iter;
   if (options.method == "ceres" || options.method == "dpmu") {
-    backend = std::make_unique<CeresBackend>(problem, options.ceres);
+    result.linear_solver = "ceres";
+    auto backend = std::make_unique<CeresBackend>(problem, options.ceres);
     iterations_per_cascade = options.ceres.max_num_iterations;
-  } else {
-    backend = std::make_unique<LocalGlobalBackend>(problem);
+    result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
+    return;
   }
-  result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
+  auto local_global = std::make_unique<LocalGlobalBackend>(problem, options.linear_solver, amg);
+  result.cascade = run_cascade(problem, *local_global, cascade, iterations_per_cascade);
+  result.cg = local_global->data().cg_stats;
+  if (result.cg.unconverged_solves > 0)
+    result.warnings.push_back(
+        std::to_string(result.cg.unconverged_solves) + " of " + std::to_string(result.cg.solves) +
+        " global steps stopped at linear_solver.cg_max_iterations (worst relative residual " +
+        std::to_string(result.cg.worst_relative_residual) + ")");
 }
 
 // LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =
@@ -157,6 +178,7 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
 
   prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options, &prepared.tet_report,
                                               &prepared.warnings);
+  sort_interior_vertices(&prepared.tets);
   LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
             << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
             << " s";

@@ -9,6 +9,7 @@
 #include "mesh/surface_mesh.h"
 #include "mesh/tet_mesh.h"
 #include "solvers/cascade.h"
+#include "solvers/local_global.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -46,6 +47,10 @@ struct UnfoldResult {
   bool beta_raised = false;   ///< beta_requested was below n/lambda_2 - 1 and was raised
   CascadeResult cascade;
   UnfoldMetrics metrics;
+  std::string linear_solver;  ///< the global step's solver: direct, iterative, ceres ("" for lsmds)
+  int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
+  double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
+  CgStats cg;                 ///< iterative: what the CG global steps did
   double seconds_unfold = 0;  ///< lambda_2 and the cascade
   std::vector<std::string> warnings;
 };

@@ -18,13 +18,14 @@ CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
   for (int cascade = 1; cascade <= options.num_cascades; ++cascade) {
     if (cascade > 1) beta *= options.growth;
     backend.set_beta(beta);
+    const size_t before = result.history.size();
+    result.reached_band = backend.run_stage(stage, cascade, &Q, &energy, &result.history);
+    // After the stage: an iterative backend learns it from its solves.
     if (!backend.bounded()) {
       result.bounded = false;
       LOG(WARNING) << "beta = " << beta << " is below the boundedness bound: the energy is "
-                   << "unbounded and the solve will overstretch";
+                   << "unbounded and the solve overstretches";
     }
-    const size_t before = result.history.size();
-    result.reached_band = backend.run_stage(stage, cascade, &Q, &energy, &result.history);
     result.cascades = cascade;
     if (result.history.size() > before)
       LOG(INFO) << "cascade " << cascade << ": beta " << beta << ", "

@@ -42,7 +42,8 @@ class CascadeBackend {
   virtual ~CascadeBackend() = default;
   /// Prepares iterations at a new beta (e.g. a numeric factorization).
   virtual void set_beta(double beta) = 0;
-  /// False if the energy is unbounded below at the current beta.
+  /// False if the energy is unbounded below at the current beta (asked after
+  /// run_stage, so a backend may find out while iterating).
   virtual bool bounded() const = 0;
   /// Iterates at the current beta from *Q until the edge ratio is in the band
   /// (returns true), the energy converges or max_iterations pass (false).

@@ -5,6 +5,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "core/errors.h"
+#include "solvers/lobpcg.h"
 
 namespace unfold {
 namespace {
@@ -50,6 +51,16 @@ double fiedler_value(const Eigen::SparseMatrix<double>& L) {
   if (eigs.info() != Spectra::CompInfo::Successful)
     throw NumericalError("the eigen-solver for lambda_2 did not converge");
   return eigs.eigenvalues()(0);
+}
+
+double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg) {
+  if (L.rows() < 100) return fiedler_value(L);
+  const LobpcgResult r = lobpcg_smallest(CsrView::of_symmetric(L), amg);
+  if (!r.converged)
+    throw NumericalError("LOBPCG for lambda_2 did not converge (relative residual " +
+                         std::to_string(r.relative_residual) + " after " +
+                         std::to_string(r.iterations) + " iterations)");
+  return r.values[0];
 }
 
 }  // namespace unfold

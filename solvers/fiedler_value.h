@@ -4,6 +4,8 @@
 
 #include <Eigen/SparseCore>
 
+#include "solvers/smoothed_aggregation.h"
+
 namespace unfold {
 
 /// Smallest non-zero eigenvalue of a connected graph's Laplacian, by
@@ -11,5 +13,11 @@ namespace unfold {
 /// @param L symmetric graph Laplacian of a connected graph (n >= 2)
 /// @throws NumericalError if the eigen-solver does not converge
 double fiedler_value(const Eigen::SparseMatrix<double>& L);
+
+/// The same by LOBPCG preconditioned with an AMG hierarchy of L (solvers/lobpcg.h):
+/// no factorization, near-linear in n; relative accuracy about 1e-12. Graphs of
+/// fewer than 100 vertices go to the direct overload.
+/// @throws NumericalError if LOBPCG does not converge
+double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg);
 
 }  // namespace unfold

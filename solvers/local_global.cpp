@@ -2,6 +2,7 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -33,20 +34,52 @@ void assemble_quadratic_part(const UnfoldProblem& problem, LocalGlobalData* data
   data->A_fixed = assemble(problem, false);
   data->A_beta = assemble(problem, true);
   data->A = data->A_fixed;
-  data->ldlt.analyze(data->A);
+  data->A.makeCompressed();
+  if (!data->iterative) data->ldlt.analyze(data->A);
   data->rhs.resize(problem.num_vertices(), 3);
   data->beta = 0;
 }
 
 }  // namespace
 
-void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data) {
+bool use_iterative_solver(const LinearSolverOptions& options, int num_vertices) {
+  return options.method == "iterative" ||
+         (options.method == "auto" && num_vertices >= options.iterative_from);
+}
+
+void validate_linear_solver_options(const LinearSolverOptions& o) {
+  const auto require = [](bool ok, const std::string& key, const std::string& what) {
+    if (!ok) throw UsageError("config key '" + key + "' " + what);
+  };
+  require(o.method == "auto" || o.method == "direct" || o.method == "iterative",
+          "linear_solver.method", "must be auto, direct or iterative, got '" + o.method + "'");
+  require(o.iterative_from >= 0, "linear_solver.iterative_from", "must be >= 0");
+  require(std::isfinite(o.cg_tolerance) && o.cg_tolerance > 0 && o.cg_tolerance < 1,
+          "linear_solver.cg_tolerance", "must be a number in (0, 1)");
+  require(std::isfinite(o.cg_forcing) && o.cg_forcing >= 0 && o.cg_forcing < 1,
+          "linear_solver.cg_forcing", "must be a number in [0, 1)");
+  require(o.cg_max_iterations >= 1, "linear_solver.cg_max_iterations", "must be at least 1");
+}
+
+void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data,
+                                 const LinearSolverOptions& options,
+                                 std::shared_ptr<const AmgData> amg) {
   for (const auto& term : problem.terms)
     if (!term->quadratic())
       throw UsageError("the " + term->name() +
                        " term is not quadratic: the local_global method cannot minimise it "
                        "(use method: ceres)");
+  data->iterative = use_iterative_solver(options, problem.num_vertices());
+  data->cg = CgOptions{options.cg_tolerance, options.cg_forcing, options.cg_max_iterations};
   assemble_quadratic_part(problem, data);
+  if (data->iterative) {
+    if (!amg) {
+      auto own = std::make_shared<AmgData>();
+      amg_precomputation(data->A_beta, AmgOptions{}, own.get());
+      amg = std::move(own);
+    }
+    data->amg = std::move(amg);
+  }
 }
 
 bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
@@ -63,6 +96,11 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
     return Eigen::Map<Eigen::VectorXd>(M.valuePtr(), M.nonZeros());
   };
   values(data->A) = values(data->A_fixed) + beta * values(data->A_beta);
+  data->beta = beta;
+  if (data->iterative) {
+    data->cg_stats.negative_curvature = false;
+    return;
+  }
   try {
     data->ldlt.factorize(data->A);
   } catch (const NumericalError& e) {
@@ -70,7 +108,6 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
     what << "factorizing the global matrix failed at beta = " << beta << ": " << e.what();
     throw NumericalError(what.str());
   }
-  data->beta = beta;
   data->negative_pivots = data->ldlt.negative_pivots();
 }
 
@@ -78,13 +115,29 @@ void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX
   data.rhs.setZero();
   for (const auto& term : data.problem->terms)
     term->add_linear(R, term->weight(data.beta), &data.rhs);
+  if (data.iterative) {
+    data.rhs_rows = data.rhs;
+    data.x_rows = *Q;
+    const CgResult r = projected_cg(CsrView::of_symmetric(data.A), *data.amg, data.rhs_rows,
+                                    &data.x_rows, data.cg, &data.cg_workspace);
+    CgStats& s = data.cg_stats;
+    ++s.solves;
+    s.iterations += r.iterations;
+    s.worst_relative_residual = std::max(s.worst_relative_residual, r.relative_residual);
+    if (!r.converged && !r.negative_curvature) ++s.unconverged_solves;
+    s.negative_curvature = s.negative_curvature || r.negative_curvature;
+    *Q = data.x_rows;
+    return;
+  }
   data.ldlt.solve(data.rhs, Q);
   // Every B_t sums to zero, so Q has zero mean up to roundoff; remove that too.
   Q->rowwise() -= Q->colwise().mean();
 }
 
-LocalGlobalBackend::LocalGlobalBackend(const UnfoldProblem& problem) {
-  local_global_precomputation(problem, &data_);
+LocalGlobalBackend::LocalGlobalBackend(const UnfoldProblem& problem,
+                                       const LinearSolverOptions& options,
+                                       std::shared_ptr<const AmgData> amg) {
+  local_global_precomputation(problem, &data_, options, std::move(amg));
 }
 
 void LocalGlobalBackend::set_beta(double beta) { local_global_set_beta(beta, &data_); }
@@ -93,7 +146,7 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
                                    double* previous_energy, std::vector<IterationRecord>* history) {
   const UnfoldProblem& problem = *data_.problem;
   for (int i = 1;; ++i) {
-    fit_rotations(problem, *Q, data_.beta, &R_);
+    fit_rotations(problem, *Q, data_.beta, &R_, &covariances_);
     global_step(data_, R_, Q);
     const int iteration = int(history->size()) + 1;
     if (!Q->allFinite()) {

@@ -7,57 +7,105 @@
 //   A(beta) Q = sum_t w_t(beta) B_t(R),   A(beta) = sum_t w_t(beta) H_t,
 // on zero-mean Q. For the paper's energy A = 2((beta+1) L - n I) (docs/method.md).
 // Non-quadratic terms (volume) are refused: use the Ceres backend.
+//
+// Two ways to solve it (docs/performance.md): a sparse LDL^T, exact and fastest
+// up to a few ten thousand vertices, and conjugate gradients preconditioned by
+// an AMG hierarchy of the beta-scaled Laplacian, warm-started from the current
+// positions, whose cost grows near-linearly where the factorization's does not.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
+#include <string>
 
 #include "solvers/cascade.h"
+#include "solvers/projected_cg.h"
+#include "solvers/smoothed_aggregation.h"
 #include "solvers/sparse_ldlt.h"
 #include "solvers/unfold_problem.h"
 
 namespace unfold {
 
-struct LocalGlobalData {
-  const UnfoldProblem* problem = nullptr;
-  Eigen::SparseMatrix<double> A_fixed;  ///< sum of w_t H_t over terms not scaled by beta
-  Eigen::SparseMatrix<double> A_beta;   ///< the same at beta = 1 over terms scaled by beta
-  Eigen::SparseMatrix<double> A;        ///< A_fixed + beta A_beta: one pattern, refilled per beta
-  double beta = 0;                      ///< beta of the current factorization
-  int negative_pivots = 0;              ///< inertia of A: 1 iff the energy is bounded
-  SparseLdlt ldlt;                      ///< analyzed once, factorized per beta
-  mutable Eigen::MatrixX3d rhs;         ///< global_step's right-hand side buffer, reused
+struct LinearSolverOptions {
+  std::string method = "auto";   ///< direct (sparse LDL^T), iterative (AMG + CG) or auto
+  int iterative_from = 50000;    ///< auto: iterative from this many vertices on
+  double cg_tolerance = 1e-8;    ///< iterative: relative residual of each global step at least
+  double cg_forcing = 1e-3;      ///< iterative: or this reduction of the warm start's residual
+  int cg_max_iterations = 1000;  ///< iterative: CG iterations per global step at most
 };
 
-/// Assembles the system's two parts and does the symbolic factorization.
+/// Whether `options` pick the iterative solver for a problem of n vertices.
+bool use_iterative_solver(const LinearSolverOptions& options, int num_vertices);
+
+/// @throws UsageError naming the config key of a bad option
+void validate_linear_solver_options(const LinearSolverOptions& options);
+
+/// What the iterative global steps did.
+struct CgStats {
+  int solves = 0;
+  int iterations = 0;          ///< CG iterations over all solves
+  int unconverged_solves = 0;  ///< stopped at cg_max_iterations
+  double worst_relative_residual = 0;
+  bool negative_curvature = false;  ///< since the last set_beta: A is not definite off 1
+};
+
+struct LocalGlobalData {
+  const UnfoldProblem* problem = nullptr;
+  Eigen::SparseMatrix<double> A_fixed;    ///< sum of w_t H_t over terms not scaled by beta
+  Eigen::SparseMatrix<double> A_beta;     ///< the same at beta = 1 over terms scaled by beta
+  Eigen::SparseMatrix<double> A;          ///< A_fixed + beta A_beta: one pattern, refilled per beta
+  double beta = 0;                        ///< beta of the current matrix
+  bool iterative = false;                 ///< CG with `amg`, else `ldlt`
+  int negative_pivots = 0;                ///< direct: inertia of A, 1 iff the energy is bounded
+  SparseLdlt ldlt;                        ///< direct: analyzed once, factorized per beta
+  std::shared_ptr<const AmgData> amg;     ///< iterative: AMG hierarchy of A_beta, built once
+  CgOptions cg;                           ///< iterative: tolerance and iteration limit
+  mutable CgStats cg_stats;               ///< iterative: what the global steps did
+  mutable Eigen::MatrixX3d rhs;           ///< global_step's right-hand side buffer, reused
+  mutable RowMatrixX3d rhs_rows, x_rows;  ///< iterative: the same in CG's layout
+  mutable CgWorkspace cg_workspace;       ///< iterative: CG's vectors, reused
+};
+
+/// Assembles the system's two parts and prepares the solver: the symbolic
+/// factorization (direct), or the AMG hierarchy of A_beta (iterative; `amg`
+/// when given, e.g. the one that served lambda_2, must be built from a
+/// multiple of A_beta).
 /// @param problem kept by pointer, must outlive data
 /// @throws UsageError if a term is not quadratic (e.g. volume)
-void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data);
+void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data,
+                                 const LinearSolverOptions& options = {},
+                                 std::shared_ptr<const AmgData> amg = nullptr);
 
-/// Numeric factorization of A(beta).
+/// A(beta): its numeric factorization (direct) or just its values (iterative).
 /// @throws NumericalError if the factorization breaks down
 void local_global_set_beta(double beta, LocalGlobalData* data);
 
 /// True when A is positive definite off the constant vector (its only negative
 /// direction is 1, from the stretch term): the global step is then a minimiser.
-/// That negative direction (eigenvalue -2n) can vanish in rounding when beta
-/// is huge, so no negative pivot counts as bounded too.
-inline bool energy_bounded(const LocalGlobalData& data) { return data.negative_pivots <= 1; }
+/// Direct: from the inertia; that negative direction (eigenvalue -2n) can vanish
+/// in rounding when beta is huge, so no negative pivot counts as bounded too.
+/// Iterative: no global step since set_beta met negative curvature.
+inline bool energy_bounded(const LocalGlobalData& data) {
+  return data.iterative ? !data.cg_stats.negative_curvature : data.negative_pivots <= 1;
+}
 
 /// Whether the quadratic terms at beta are bounded below off the constant
 /// vector (one LDL^T factorization; non-quadratic terms are ignored).
 bool quadratic_part_bounded(const UnfoldProblem& problem, double beta);
 
-/// Global step: the zero-mean minimiser over Q for fixed rotations R.
-/// No allocation once Q has n rows; uses data's buffers, so one `data` must
-/// not serve two global steps at the same time.
+/// Global step: the zero-mean minimiser over Q for fixed rotations R (iterative:
+/// to cg_tolerance, from *Q). No allocation once Q has n rows; uses data's
+/// buffers, so one `data` must not serve two global steps at the same time.
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q);
 
 /// Algorithm 1's iterations for the cascade driver (solvers/cascade.h).
 class LocalGlobalBackend : public CascadeBackend {
  public:
-  explicit LocalGlobalBackend(const UnfoldProblem& problem);
+  explicit LocalGlobalBackend(const UnfoldProblem& problem, const LinearSolverOptions& options = {},
+                              std::shared_ptr<const AmgData> amg = nullptr);
   void set_beta(double beta) override;
+  const LocalGlobalData& data() const { return data_; }
   bool bounded() const override { return energy_bounded(data_); }
   bool run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,
                  double* previous_energy, std::vector<IterationRecord>* history) override;
@@ -65,6 +113,7 @@ class LocalGlobalBackend : public CascadeBackend {
  private:
   LocalGlobalData data_;
   Rotations R_;
+  std::vector<Eigen::Matrix3d> covariances_;  ///< the local step's buffer
 };
 
 }  // namespace unfold

@@ -30,13 +30,15 @@ LandmarkDistances lsmds_distances(const EdgeGraph& graph, const Eigen::MatrixX3d
         throw NumericalError("lsmds: the tet edge graph is disconnected (from vertex " +
                              std::to_string(source) + ")");
   };
+  const NeighborLengths lengths = neighbor_lengths(graph, P);
   if (n <= options.exact_limit || n <= options.landmarks) {
     d.rows.resize(n, n);
     d.landmarks.resize(size_t(n));
 #pragma omp parallel for schedule(dynamic, 16)
     for (int i = 0; i < n; ++i) {
       d.landmarks[size_t(i)] = i;
-      const std::vector<double> row = graph_geodesics(graph, P, i);
+      std::vector<double> row;
+      graph_geodesics(graph, lengths, i, &row);
       d.rows.row(i) = Eigen::Map<const Eigen::RowVectorXd>(row.data(), n);
     }
     if (!d.rows.allFinite()) throw NumericalError("lsmds: the tet edge graph is disconnected");
@@ -49,7 +51,8 @@ LandmarkDistances lsmds_distances(const EdgeGraph& graph, const Eigen::MatrixX3d
   int next = 0;
   for (int a = 0; a < k; ++a) {
     d.landmarks.push_back(next);
-    const std::vector<double> row = graph_geodesics(graph, P, next);
+    std::vector<double> row;
+    graph_geodesics(graph, lengths, next, &row);
     check_row(row, next);
     d.rows.row(a) = Eigen::Map<const Eigen::RowVectorXd>(row.data(), n);
     nearest = nearest.cwiseMin(d.rows.row(a).transpose());

@@ -14,9 +14,13 @@ double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, con
 }
 
 void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, double beta,
-                   Rotations* R) {
+                   Rotations* R, std::vector<Eigen::Matrix3d>* covariances) {
   const int n = problem.num_vertices();
-  std::vector<Eigen::Matrix3d> S(size_t(n), Eigen::Matrix3d::Zero());
+  std::vector<Eigen::Matrix3d> local;
+  std::vector<Eigen::Matrix3d>& S = covariances ? *covariances : local;
+  S.resize(size_t(n));
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) S[size_t(i)].setZero();
   bool any = false;
   for (const auto& term : problem.terms)
     if (term->uses_rotations()) {

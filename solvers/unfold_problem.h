@@ -26,8 +26,10 @@ double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, con
 
 /// The local step: per vertex, the rotation minimising the rotation-dependent
 /// terms at beta (their weighted cell covariances summed), in parallel over vertices.
+/// @param covariances optional buffer for the n cell covariances, so that
+///        repeated calls allocate nothing
 void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, double beta,
-                   Rotations* R);
+                   Rotations* R, std::vector<Eigen::Matrix3d>* covariances = nullptr);
 
 /// Half the summed growth Hessians (EnergyTerm::add_growth_hessian) of the terms that scale with
 /// beta, at beta = 1: the Laplacian whose lambda_2 sets the scale of beta (for the paper's energy,

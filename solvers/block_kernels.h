@@ -1,0 +1,44 @@
+// Kernels on n x 3 row-major blocks (one row per vertex, the x, y, z columns
+// side by side) shared by the iterative solvers: a sparse matrix times a block,
+// per-column dot products and column means. Parallel over rows; reductions are
+// summed in fixed chunks, so results do not depend on the thread count.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "energies/row_major.h"
+
+namespace unfold {
+
+using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+
+/// A compressed sparse row matrix seen through its arrays: a RowSparse, or a
+/// symmetric column-major matrix (its CSC arrays are its own CSR arrays).
+struct CsrView {
+  int rows = 0;
+  const int* outer = nullptr;
+  const int* inner = nullptr;
+  const double* values = nullptr;
+
+  CsrView() = default;
+  explicit CsrView(const RowSparse& A);
+  /// @pre A is compressed and symmetric (pattern and values)
+  static CsrView of_symmetric(const Eigen::SparseMatrix<double>& A);
+};
+
+/// Y = A X. @pre X has A.rows rows; Y is resized (may not alias X).
+void multiply(const CsrView& A, const RowMatrixX3d& X, RowMatrixX3d* Y);
+
+/// R = B - A X. @pre B and X have A.rows rows; R is resized. R may alias B
+/// (R -= A X), not X.
+void residual(const CsrView& A, const RowMatrixX3d& B, const RowMatrixX3d& X, RowMatrixX3d* R);
+
+/// Per column k: sum_i X(i, k) Y(i, k).
+Eigen::Array3d column_dots(const RowMatrixX3d& X, const RowMatrixX3d& Y);
+
+/// Subtracts each column's mean: the projection onto the complement of the
+/// constant vector, where the unfolding's global matrix is definite.
+void remove_column_means(RowMatrixX3d* X);
+
+}  // namespace unfold

@@ -1,0 +1,255 @@
+#include "solvers/smoothed_aggregation.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "core/errors.h"
+
+namespace unfold {
+namespace {
+
+// Aggregates of strongly connected nodes (Vanek et al.'s three passes): a node
+// whose strong neighbours are all free starts an aggregate with them; a left-over
+// node joins its strongest neighbour's aggregate of the first pass; what is still
+// free forms aggregates with its free neighbours. Returns the count.
+int aggregate(const RowSparse& A, double strength, std::vector<int>* aggregate_of) {
+  const int n = int(A.rows());
+  const Eigen::VectorXd diagonal = A.diagonal();
+  const auto strong = [&](int i, const RowSparse::InnerIterator& it) {
+    return it.col() != i &&
+           std::abs(it.value()) > strength * std::sqrt(std::abs(diagonal[i] * diagonal[it.col()]));
+  };
+  std::vector<int>& agg = *aggregate_of;
+  agg.assign(size_t(n), -1);
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    bool free = true;
+    for (RowSparse::InnerIterator it(A, i); it && free; ++it)
+      if (strong(i, it) && agg[size_t(it.col())] >= 0) free = false;
+    if (!free || agg[size_t(i)] >= 0) continue;
+    agg[size_t(i)] = count;
+    for (RowSparse::InnerIterator it(A, i); it; ++it)
+      if (strong(i, it)) agg[size_t(it.col())] = count;
+    ++count;
+  }
+  const std::vector<int> first_pass = agg;
+  for (int i = 0; i < n; ++i) {
+    if (agg[size_t(i)] >= 0) continue;
+    double best = 0;
+    for (RowSparse::InnerIterator it(A, i); it; ++it)
+      if (strong(i, it) && first_pass[size_t(it.col())] >= 0 && std::abs(it.value()) > best) {
+        best = std::abs(it.value());
+        agg[size_t(i)] = first_pass[size_t(it.col())];
+      }
+  }
+  for (int i = 0; i < n; ++i) {
+    if (agg[size_t(i)] >= 0) continue;
+    agg[size_t(i)] = count;
+    for (RowSparse::InnerIterator it(A, i); it; ++it)
+      if (strong(i, it) && agg[size_t(it.col())] < 0) agg[size_t(it.col())] = count;
+    ++count;
+  }
+  return count;
+}
+
+// Largest eigenvalue of D^-1 A: a few power steps in the D inner product (a
+// lower estimate, raised by 10 %), capped by Gershgorin's bound.
+double estimate_lambda_max(const RowSparse& A, const Eigen::VectorXd& inverse_diagonal) {
+  const int n = int(A.rows());
+  double gershgorin = 0;
+  for (int i = 0; i < n; ++i) {
+    double row = 0;
+    for (RowSparse::InnerIterator it(A, i); it; ++it) row += std::abs(it.value());
+    gershgorin = std::max(gershgorin, row * inverse_diagonal[i]);
+  }
+  std::mt19937_64 random(1);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) v[i] = unit(random);
+  double estimate = 0;
+  for (int k = 0; k < 15; ++k) {
+    const Eigen::VectorXd Av = A * v;
+    const double vDv = v.dot(v.cwiseQuotient(inverse_diagonal));
+    if (!(vDv > 0)) break;
+    estimate = v.dot(Av) / vDv;
+    v = inverse_diagonal.cwiseProduct(Av);
+    v /= v.norm();
+  }
+  return std::min(gershgorin, 1.1 * estimate);
+}
+
+void build_level(AmgLevel* level) {
+  const int n = int(level->A.rows());
+  level->inverse_diagonal.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const double d = level->A.coeff(i, i);
+    if (!(d > 0))
+      throw UsageError("amg_precomputation: diagonal entry " + std::to_string(i) +
+                       " is not positive");
+    level->inverse_diagonal[i] = 1 / d;
+  }
+  level->lambda_max = estimate_lambda_max(level->A, level->inverse_diagonal);
+}
+
+// Chebyshev polynomial smoothing of A x = b with the Jacobi preconditioner
+// D^-1, damping the eigenvalues of D^-1 A in [lambda_max / ratio, lambda_max]
+// (Saad's three-term recurrence). A polynomial in D^-1 A keeps the V-cycle
+// symmetric when the same smoother runs before and after the coarse correction.
+void chebyshev(const AmgLevel& level, const AmgOptions& options, const RowMatrixX3d& b,
+               RowMatrixX3d* x, bool zero_initial) {
+  const CsrView A(level.A);
+  const int n = A.rows;
+  const double upper = level.lambda_max, lower = upper / options.smoothing_ratio;
+  const double theta = (upper + lower) / 2, delta = (upper - lower) / 2, sigma = theta / delta;
+  double rho = 1 / sigma;
+  RowMatrixX3d& r = level.r;
+  RowMatrixX3d& d = level.d;
+  if (zero_initial) {
+    r = b;
+    x->setZero(n, 3);
+  } else {
+    residual(A, b, *x, &r);
+  }
+  d.resize(n, 3);
+  const Eigen::VectorXd& dinv = level.inverse_diagonal;
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < n; ++i) d.row(i) = (dinv[i] / theta) * r.row(i);
+  for (int k = 1;; ++k) {
+    *x += d;
+    if (k == options.smoothing_degree) break;
+    residual(A, r, d, &r);  // r -= A d
+    const double rho_next = 1 / (2 * sigma - rho);
+    const double keep = rho_next * rho, step = 2 * rho_next / delta;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; ++i) d.row(i) = keep * d.row(i) + (step * dinv[i]) * r.row(i);
+    rho = rho_next;
+  }
+}
+
+// Inverse on the complement of the null space, eigenvalues at roundoff level
+// dropped: coarse Laplacians keep the constant vector in their null space.
+Eigen::MatrixXd pseudo_inverse(const Eigen::MatrixXd& A) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  const Eigen::VectorXd& values = eig.eigenvalues();
+  const double cutoff = 1e-10 * values.cwiseAbs().maxCoeff();
+  Eigen::VectorXd inverse(values.size());
+  for (Eigen::Index k = 0; k < values.size(); ++k)
+    inverse[k] = std::abs(values[k]) > cutoff ? 1 / values[k] : 0;
+  return eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+void vcycle(const AmgData& data, size_t l, const RowMatrixX3d& b, RowMatrixX3d* x) {
+  if (l + 1 == data.levels.size()) {
+    *x = data.coarse_inverse * b;
+    return;
+  }
+  const AmgLevel& level = data.levels[l];
+  const AmgLevel& coarse = data.levels[l + 1];
+  chebyshev(level, data.options, b, x, true);
+  residual(CsrView(level.A), b, *x, &level.r);
+  multiply(CsrView(level.R), level.r, &coarse.b);
+  vcycle(data, l + 1, coarse.b, &coarse.x);
+  multiply(CsrView(level.P), coarse.x, &level.d);
+  *x += level.d;
+  chebyshev(level, data.options, b, x, false);
+}
+
+}  // namespace
+
+void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& options,
+                        AmgData* data) {
+  if (M.rows() != M.cols()) throw UsageError("amg_precomputation: matrix is not square");
+  data->options = options;
+  data->levels.clear();
+  data->levels.emplace_back();
+  data->levels.back().A = RowSparse(M).pruned();
+  double nonzeros = 0;
+  const double finest = double(data->levels.back().A.nonZeros());
+  for (;;) {
+    AmgLevel& level = data->levels.back();
+    level.A.makeCompressed();
+    build_level(&level);
+    nonzeros += double(level.A.nonZeros());
+    const int n = int(level.A.rows());
+    if (n <= options.coarse_size || int(data->levels.size()) >= options.max_levels) break;
+    std::vector<int> agg;
+    const int nc = aggregate(level.A, options.strength, &agg);
+    if (nc >= n * 9 / 10) break;  // no real coarsening left
+    // Tentative prolongator: piecewise constant on aggregates (it carries the
+    // constant vector, the Laplacian's null space, exactly), then one damped
+    // Jacobi step (I - omega D^-1 A) smooths its basis functions.
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(size_t(n));
+    for (int i = 0; i < n; ++i) t.emplace_back(i, agg[size_t(i)], 1.0);
+    RowSparse P0(n, nc);
+    P0.setFromTriplets(t.begin(), t.end());
+    const double omega = 4.0 / (3.0 * level.lambda_max);
+    const RowSparse AP0 = level.A * P0;
+    const RowSparse DAP0 = level.inverse_diagonal.asDiagonal() * AP0;
+    level.P = RowSparse(P0 - omega * DAP0).pruned();
+    level.R = level.P.transpose();
+    const RowSparse AP = level.A * level.P;
+    const RowSparse RAP = level.R * AP;
+    RowSparse coarse =
+        RowSparse(0.5 * (RAP + RowSparse(RAP.transpose()))).pruned();  // exact symmetry
+    data->levels.emplace_back();
+    data->levels.back().A = std::move(coarse);
+  }
+  data->operator_complexity = nonzeros / finest;
+  data->coarse_inverse = pseudo_inverse(Eigen::MatrixXd(data->levels.back().A));
+}
+
+void amg_pencil_precomputation(const AmgData& data, const Eigen::SparseMatrix<double>& F,
+                               const Eigen::SparseMatrix<double>& B, AmgPencil* pencil) {
+  const size_t levels = data.levels.size();
+  pencil->F.resize(levels);
+  pencil->B.resize(levels);
+  RowSparse f(F), b(B);
+  Eigen::VectorXd constant = Eigen::VectorXd::Ones(F.rows());
+  for (size_t l = 0;; ++l) {
+    // One pattern for both: the union, explicit zeros kept.
+    RowSparse zero_f = 0.0 * f, zero_b = 0.0 * b;
+    pencil->F[l] = f + zero_b;
+    pencil->B[l] = b + zero_f;
+    pencil->F[l].makeCompressed();
+    pencil->B[l].makeCompressed();
+    if (l + 1 == levels) break;
+    const AmgLevel& level = data.levels[l];
+    const RowSparse fP = f * level.P, bP = b * level.P;
+    f = level.R * fP;
+    b = level.R * bP;
+    constant = level.R * constant;
+  }
+  pencil->coarse_constant = constant;
+}
+
+void amg_set_pencil(const AmgPencil& pencil, double beta, AmgData* data) {
+  for (size_t l = 0; l < data->levels.size(); ++l) {
+    AmgLevel& level = data->levels[l];
+    level.A = pencil.F[l];
+    Eigen::Map<Eigen::VectorXd>(level.A.valuePtr(), level.A.nonZeros()) +=
+        beta * Eigen::Map<const Eigen::VectorXd>(pencil.B[l].valuePtr(), pencil.B[l].nonZeros());
+    build_level(&level);
+  }
+  // The fine operator's Rayleigh quotient at the constant vector: negative for
+  // the stretch term. Galerkin carries 1^T A 1 to the coarsest level exactly.
+  const RowSparse& fine = data->levels.front().A;
+  const double n = double(fine.rows());
+  const double constant_value =
+      Eigen::VectorXd::Ones(fine.rows()).dot(fine * Eigen::VectorXd::Ones(fine.rows())) / n;
+  Eigen::MatrixXd coarse = Eigen::MatrixXd(data->levels.back().A);
+  if (constant_value < 0) {
+    const Eigen::VectorXd& v = pencil.coarse_constant;
+    coarse += (-2 * constant_value / n) * v * v.transpose();
+  }
+  data->coarse_inverse = pseudo_inverse(coarse);
+}
+
+void amg_vcycle(const AmgData& data, const RowMatrixX3d& b, RowMatrixX3d* x) {
+  vcycle(data, 0, b, x);
+}
+
+}  // namespace unfold
