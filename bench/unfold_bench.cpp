@@ -1,9 +1,13 @@
 // Timings of the solver's parts on one tet mesh: symbolic analysis, numeric
 // factorization and one forward/backward solve for each sparse LDL^T backend,
-// one local step, one global step, one local-global iteration, the whole
-// cascade, and the metrics. The mesh is $UNFOLD_BENCH_MESH, else TOSCA wolf0
-// from ../shared/data, else the built-in demo shape; tetrahedralized with the
-// default options and TetGen's volume bound $UNFOLD_BENCH_MAX_VOLUME if set.
+// the AMG hierarchy, one V-cycle and one CG global step of the iterative
+// solver, lambda_2 both ways, one local step, one global step, one
+// local-global iteration and the whole cascade with either linear solver, the
+// per-iteration checks (energy, edge ratio), and the metrics. The mesh is
+// $UNFOLD_BENCH_MESH, else TOSCA wolf0 from ../shared/data, else the built-in
+// demo shape; tetrahedralized with the default options and TetGen's volume
+// bound $UNFOLD_BENCH_MAX_VOLUME if set. Direct-solver benchmarks are skipped
+// above 60,000 vertices (one factorization takes minutes there).
 //   build/bin/unfold_bench [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
 #include <glog/logging.h>
@@ -11,9 +15,12 @@
 #include <Eigen/Geometry>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
+#include "mesh/sort_interior_vertices.h"
+#include "metrics/edge_ratio.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
@@ -21,18 +28,21 @@
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
-#include "solvers/unfold_problem.h"
 #include "solvers/sparse_ldlt.h"
+#include "solvers/unfold_problem.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
 namespace {
+
+constexpr int kDirectLimit = 60000;
 
 struct BenchMesh {
   std::string name;
   TetMesh tets;
   EdgeGraph graph;
   UnfoldProblem problem;
+  std::shared_ptr<AmgData> amg;  ///< of the beta Laplacian
   double beta = 0;
 };
 
@@ -54,11 +64,15 @@ const BenchMesh& bench_mesh() {
     if (const char* volume = std::getenv("UNFOLD_BENCH_MAX_VOLUME"))
       tet_options.max_volume = std::atof(volume);
     m.tets = tetrahedralize(surface, tet_options);
+    sort_interior_vertices(&m.tets);  // as the pipeline does
     m.graph = build_edge_graph(int(m.tets.V.rows()), m.tets.T);
     m.problem.graph = &m.graph;
     m.problem.rest = m.tets.V;
     m.problem.terms = make_energy_terms(m.tets, m.graph, EnergyOptions{});
-    m.beta = 1.5 * m.graph.num_vertices / fiedler_value(beta_laplacian(m.problem));
+    const Eigen::SparseMatrix<double> L = beta_laplacian(m.problem);
+    m.amg = std::make_shared<AmgData>();
+    amg_precomputation(L, AmgOptions{}, m.amg.get());
+    m.beta = 1.5 * m.graph.num_vertices / fiedler_value(L, *m.amg);
     std::fprintf(stderr, "bench mesh: %s, %d tet vertices, %d edges\n", m.name.c_str(),
                  m.graph.num_vertices, m.graph.num_edges());
     return m;
@@ -66,17 +80,32 @@ const BenchMesh& bench_mesh() {
   return mesh;
 }
 
+// Arguments of the solver benchmarks: 0 direct, 1 iterative linear solver.
+LinearSolverOptions solver_arg(const benchmark::State& state) {
+  LinearSolverOptions options;
+  options.method = state.range(0) == 0 ? "direct" : "iterative";
+  return options;
+}
+
+// Skips direct-solver benchmarks on meshes where one factorization takes minutes.
+bool skip_direct(benchmark::State& state, bool direct) {
+  if (!direct || bench_mesh().graph.num_vertices <= kDirectLimit) return false;
+  state.SkipWithError("direct solver skipped above 60000 vertices");
+  return true;
+}
+
 // A mid-cascade state: rotations after a few iterations, so the work is typical.
 struct SolverState {
   LocalGlobalData data;
   Eigen::MatrixX3d Q;
   Rotations R;
-  explicit SolverState(const BenchMesh& m) {
-    local_global_precomputation(m.problem, &data);
+  std::vector<Eigen::Matrix3d> covariances;
+  SolverState(const BenchMesh& m, const LinearSolverOptions& options) {
+    local_global_precomputation(m.problem, &data, options, m.amg);
     local_global_set_beta(m.beta, &data);
     Q = m.tets.V;
     for (int k = 0; k < 3; ++k) {
-      fit_rotations(m.problem, Q, m.beta, &R);
+      fit_rotations(m.problem, Q, m.beta, &R, &covariances);
       global_step(data, R, &Q);
     }
   }
@@ -94,6 +123,7 @@ Eigen::SparseMatrix<double> global_matrix(const BenchMesh& m) {
 }
 
 void BM_SymbolicAnalysis(benchmark::State& state) {
+  if (skip_direct(state, true)) return;
   const Eigen::SparseMatrix<double> A = global_matrix(bench_mesh());
   for (auto _ : state) {
     SparseLdlt ldlt(backend_arg(state));
@@ -103,6 +133,7 @@ void BM_SymbolicAnalysis(benchmark::State& state) {
 BENCHMARK(BM_SymbolicAnalysis)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_NumericFactorization(benchmark::State& state) {
+  if (skip_direct(state, true)) return;
   const Eigen::SparseMatrix<double> A = global_matrix(bench_mesh());
   SparseLdlt ldlt(backend_arg(state));
   ldlt.analyze(A);
@@ -112,53 +143,106 @@ void BM_NumericFactorization(benchmark::State& state) {
 BENCHMARK(BM_NumericFactorization)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_Solve(benchmark::State& state) {
+  if (skip_direct(state, true)) return;
   const BenchMesh& m = bench_mesh();
   const Eigen::SparseMatrix<double> A = global_matrix(m);
   SparseLdlt ldlt(backend_arg(state));
   ldlt.analyze(A);
   ldlt.factorize(A);
-  SolverState s(m);
+  SolverState s(m, LinearSolverOptions{"direct"});
   Eigen::MatrixX3d x;
   for (auto _ : state) ldlt.solve(s.data.rhs, &x);
 }
 BENCHMARK(BM_Solve)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+void BM_AmgSetup(benchmark::State& state) {
+  const Eigen::SparseMatrix<double> L = beta_laplacian(bench_mesh().problem);
+  AmgData amg;
+  for (auto _ : state) amg_precomputation(L, AmgOptions{}, &amg);
+  state.counters["levels"] = double(amg.levels.size());
+  state.counters["operator_complexity"] = amg.operator_complexity;
+}
+BENCHMARK(BM_AmgSetup)->Unit(benchmark::kMillisecond);
+
+void BM_VCycle(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  SolverState s(m, LinearSolverOptions{"iterative"});
+  RowMatrixX3d x;
+  const RowMatrixX3d b = s.data.rhs;
+  for (auto _ : state) amg_vcycle(*s.data.amg, b, &x);
+}
+BENCHMARK(BM_VCycle)->Unit(benchmark::kMillisecond);
+
+void BM_FiedlerValue(benchmark::State& state) {
+  if (skip_direct(state, state.range(0) == 0)) return;
+  const BenchMesh& m = bench_mesh();
+  const Eigen::SparseMatrix<double> L = beta_laplacian(m.problem);
+  double lambda2 = 0;
+  for (auto _ : state) lambda2 = state.range(0) == 0 ? fiedler_value(L) : fiedler_value(L, *m.amg);
+  state.counters["lambda2"] = lambda2;
+}
+BENCHMARK(BM_FiedlerValue)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 void BM_LocalStep(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
-  SolverState s(m);
-  for (auto _ : state) fit_rotations(m.problem, s.Q, m.beta, &s.R);
+  SolverState s(m, LinearSolverOptions{});
+  for (auto _ : state) fit_rotations(m.problem, s.Q, m.beta, &s.R, &s.covariances);
 }
 BENCHMARK(BM_LocalStep)->Unit(benchmark::kMillisecond);
 
+// The iterative global step starts from the positions it replaces (warm
+// start), so it is timed on a copy of one fixed mid-cascade state.
 void BM_GlobalStep(benchmark::State& state) {
+  if (skip_direct(state, state.range(0) == 0)) return;
   const BenchMesh& m = bench_mesh();
-  SolverState s(m);
-  for (auto _ : state) global_step(s.data, s.R, &s.Q);
+  SolverState s(m, solver_arg(state));
+  Eigen::MatrixX3d Q;
+  for (auto _ : state) {
+    Q = s.Q;
+    global_step(s.data, s.R, &Q);
+  }
+  if (s.data.iterative)
+    state.counters["cg_iterations"] = double(s.data.cg_stats.iterations) / s.data.cg_stats.solves;
 }
-BENCHMARK(BM_GlobalStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GlobalStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_Iteration(benchmark::State& state) {
+  if (skip_direct(state, state.range(0) == 0)) return;
   const BenchMesh& m = bench_mesh();
-  SolverState s(m);
+  SolverState s(m, solver_arg(state));
+  const Eigen::MatrixX3d start = s.Q;
   for (auto _ : state) {
-    fit_rotations(m.problem, s.Q, m.beta, &s.R);
+    s.Q = start;
+    fit_rotations(m.problem, s.Q, m.beta, &s.R, &s.covariances);
     global_step(s.data, s.R, &s.Q);
   }
 }
-BENCHMARK(BM_Iteration)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Iteration)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// What Algorithm 1 computes after each iteration to decide whether to go on.
+void BM_IterationChecks(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  SolverState s(m, LinearSolverOptions{});
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(total_energy(m.problem, s.Q, s.R, m.beta));
+    benchmark::DoNotOptimize(edge_ratio(m.graph, m.tets.V, s.Q));
+  }
+}
+BENCHMARK(BM_IterationChecks)->Unit(benchmark::kMillisecond);
 
 void BM_Cascade(benchmark::State& state) {
+  if (skip_direct(state, state.range(0) == 0)) return;
   const BenchMesh& m = bench_mesh();
   CascadeOptions options;
   options.beta = m.beta;
   int iterations = 0;
   for (auto _ : state) {
-    LocalGlobalBackend backend(m.problem);
+    LocalGlobalBackend backend(m.problem, solver_arg(state), m.amg);
     iterations = run_cascade(m.problem, backend, options, options.k_iter).iterations;
   }
   state.counters["iterations"] = iterations;
 }
-BENCHMARK(BM_Cascade)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Cascade)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // The metrics on the bench mesh's rest pose against a rotated, scaled copy
 // (the cost does not depend on the shape), with the default options.

@@ -18,6 +18,7 @@ ArapEnergy::ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
       const double w = weights_[size_t(graph.neighbor_edge[size_t(k)])];
       weighted_edges_.row(k) = w * (rest.row(i) - rest.row(graph.neighbors[size_t(k)]));
       weighted_laplacian_rest_.row(i) += weighted_edges_.row(k);
+      constant_ += weighted_edges_.row(k).dot(rest.row(i) - rest.row(graph.neighbors[size_t(k)]));
     }
 }
 

@@ -47,6 +47,8 @@ class ArapEnergy : public EnergyTerm {
   bool quadratic() const override { return true; }
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
   void add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const override;
+  /// sum_i sum_j w_ij |p_i - p_j|^2: rotations keep lengths, so c does not depend on R.
+  double constant(const Rotations& /*R*/) const override { return constant_; }
   bool uses_rotations() const override { return true; }
   void add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
                                std::vector<Eigen::Matrix3d>* S) const override;
@@ -60,6 +62,7 @@ class ArapEnergy : public EnergyTerm {
   // these, laid out in the graph's CSR order, instead of gathering from rest_.
   RowMatrixX3d weighted_edges_;           ///< per CSR entry k of cell i: w_ij (p_i - p_j)
   RowMatrixX3d weighted_laplacian_rest_;  ///< (L_w P)_i = sum_j w_ij (p_i - p_j)
+  double constant_ = 0;                   ///< sum_i sum_j w_ij |p_i - p_j|^2
 };
 
 }  // namespace unfold

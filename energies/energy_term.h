@@ -48,6 +48,12 @@ class EnergyTerm {
   /// Adds scale * B(R) (quadratic terms only).
   virtual void add_linear(const Rotations& /*R*/, double /*scale*/, Eigen::MatrixX3d* /*B*/) const {
   }
+  /// c(R) (quadratic terms only): the value at Q = 0. The local-global solver
+  /// gets the energy after a global step from it without a sweep over the
+  /// mesh; terms override this with their closed form.
+  virtual double constant(const Rotations& R) const {
+    return evaluate(Eigen::MatrixX3d::Zero(R.size(), 3), R, 0, nullptr);
+  }
 
   /// Adds scale * the Hessian of the term's quadratic growth far from the rest
   /// shape (acting alike on x, y, z): what bounds the concave stretch term,

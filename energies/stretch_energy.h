@@ -56,6 +56,7 @@ class StretchEnergy : public EnergyTerm {
                   Eigen::MatrixX3d* grad) const override;
   bool quadratic() const override { return true; }
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
+  double constant(const Rotations& /*R*/) const override { return 0; }
 
  private:
   const EdgeGraph& graph_;

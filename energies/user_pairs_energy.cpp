@@ -30,4 +30,10 @@ void UserPairsEnergy::add_linear(const Rotations& /*R*/, double scale, Eigen::Ma
   }
 }
 
+double UserPairsEnergy::constant(const Rotations& /*R*/) const {
+  double c = 0;
+  for (const UserPair& p : pairs_) c += p.t.squaredNorm();
+  return c;
+}
+
 }  // namespace unfold

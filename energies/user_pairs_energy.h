@@ -45,6 +45,7 @@ class UserPairsEnergy : public EnergyTerm {
   bool quadratic() const override { return true; }
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
   void add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const override;
+  double constant(const Rotations& R) const override;
 
  private:
   std::vector<UserPair> pairs_;

@@ -58,6 +58,55 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov) {
   return rotation_by_svd(cov);  // not reached for the conditioning admitted above
 }
 
+Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d& guess) {
+  // R maximises tr(R^T M) with M = cov^T, i.e. Y = R^T M must be symmetric
+  // positive definite. Writing R <- R exp([w]x) and linearising the symmetry of
+  // exp(-[w]x) Y gives (tr(S) I - S) w = 2 a, with S and [a]x the symmetric and
+  // skew parts of Y. The update is applied by the Cayley map, which agrees with
+  // exp to first order (enough for Newton) and is exactly orthogonal. Written
+  // out on scalars: this runs for every cell in every iteration.
+  const Eigen::Matrix3d M = cov.transpose();
+  Eigen::Matrix3d R = guess;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Matrix3d Y = R.transpose() * M;
+    const double s00 = Y(0, 0), s11 = Y(1, 1), s22 = Y(2, 2);
+    const double s01 = 0.5 * (Y(0, 1) + Y(1, 0)), s02 = 0.5 * (Y(0, 2) + Y(2, 0)),
+                 s12 = 0.5 * (Y(1, 2) + Y(2, 1));
+    // Half the Newton step, c = w / 2, solves G c = a with G = tr(S) I - S
+    // (symmetric), by cofactors.
+    const double a0 = 0.5 * (Y(2, 1) - Y(1, 2)), a1 = 0.5 * (Y(0, 2) - Y(2, 0)),
+                 a2 = 0.5 * (Y(1, 0) - Y(0, 1));
+    const double g00 = s11 + s22, g11 = s00 + s22, g22 = s00 + s11;
+    const double c00 = g11 * g22 - s12 * s12, c01 = s01 * g22 + s02 * s12,
+                 c02 = s01 * s12 + s02 * g11, c11 = g00 * g22 - s02 * s02,
+                 c12 = g00 * s12 + s01 * s02, c22 = g00 * g11 - s01 * s01;
+    const double det = g00 * c00 - s01 * c01 - s02 * c02;
+    if (!(det > 0)) break;  // G is positive definite when S is: far from the answer
+    const double c0 = (c00 * a0 + c01 * a1 + c02 * a2) / det,
+                 c1 = (c01 * a0 + c11 * a1 + c12 * a2) / det,
+                 c2 = (c02 * a0 + c12 * a1 + c22 * a2) / det;
+    const double step = c0 * c0 + c1 * c1 + c2 * c2;
+    if (!(step < 0.0625)) break;  // not close enough for Newton
+    // Cayley: U = I + 2 / (1 + |c|^2) ([c]x + [c]x^2), [c]x^2 = c c^T - |c|^2 I.
+    const double f = 2 / (1 + step), d = 1 - f * step;
+    Eigen::Matrix3d U;
+    U << d + f * c0 * c0, f * (c0 * c1 - c2), f * (c0 * c2 + c1),  //
+        f * (c1 * c0 + c2), d + f * c1 * c1, f * (c1 * c2 - c0),   //
+        f * (c2 * c0 - c1), f * (c2 * c1 + c0), d + f * c2 * c2;
+    R = R * U;
+    if (step < 2.5e-13) {
+      // |w| < 1e-6: R is now exact to ~|w|^2. It is the maximiser, not another
+      // critical point, iff S is positive definite (Sylvester's criterion).
+      const double minor2 = s00 * s11 - s01 * s01;
+      const double minor3 = s00 * (s11 * s22 - s12 * s12) - s01 * (s01 * s22 - s12 * s02) +
+                            s02 * (s01 * s12 - s11 * s02);
+      if (s00 > 0 && minor2 > 0 && minor3 > 0) return R;
+      break;
+    }
+  }
+  return best_rotation(cov);
+}
+
 void best_rotations(const EdgeGraph& g, const Eigen::MatrixX3d& rest,
                     const Eigen::MatrixX3d& current, Rotations* R) {
   R->resize(size_t(g.num_vertices));

@@ -18,6 +18,14 @@ using Rotations = std::vector<Eigen::Matrix3d>;
 /// @param cov sum_k source_k target_k^T (3x3 covariance).
 Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov);
 
+/// The same rotation, refined from a nearby guess (the cell's rotation one
+/// iteration earlier) by Newton's method on the rotation group: quadratic
+/// convergence, so one to three cheap steps where the guess is close; far
+/// guesses and ill-conditioned cells go to best_rotation(cov). Agrees with it
+/// to about 1e-12.
+/// @param guess a rotation
+Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d& guess);
+
 /// For every vertex i: R_i = argmin_R sum_{j in N_i} |(q_i - q_j) - R (p_i - p_j)|^2,
 /// in parallel over vertices. Isolated vertices get the identity.
 /// @param rest    rest positions p (n x 3)

@@ -99,6 +99,13 @@ bool quadratic_part_bounded(const UnfoldProblem& problem, double beta);
 /// buffers, so one `data` must not serve two global steps at the same time.
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q);
 
+/// E(Q; R) at data.beta right after global_step(data, R, Q), from the quadratic
+/// form instead of a sweep over every cell (total_energy): with A Q = B - r,
+/// r the solve's residual (roundoff for the direct solver, the CG residual for
+/// the iterative one), E = sum_t w_t c_t(R) - tr(Q^T B) - tr(Q^T r).
+double energy_after_global_step(const LocalGlobalData& data, const Rotations& R,
+                                const Eigen::MatrixX3d& Q);
+
 /// Algorithm 1's iterations for the cascade driver (solvers/cascade.h).
 class LocalGlobalBackend : public CascadeBackend {
  public:

@@ -27,15 +27,23 @@ void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, doub
       term->add_rotation_covariance(Q, term->weight(beta), &S);
       any = true;
     }
+  // The rotations of the previous call, when there are n of them, are
+  // starting guesses: cells turn little from one iteration to the next.
+  const bool warm = R->size() == size_t(n);
   R->resize(size_t(n));
 #pragma omp parallel for schedule(static)
-  for (int i = 0; i < n; ++i)
-    (*R)[size_t(i)] =
-        any && !S[size_t(i)].isZero(0) ? best_rotation(S[size_t(i)]) : Eigen::Matrix3d::Identity();
+  for (int i = 0; i < n; ++i) {
+    Eigen::Matrix3d& r = (*R)[size_t(i)];
+    if (!any || S[size_t(i)].isZero(0))
+      r.setIdentity();
+    else
+      r = warm ? best_rotation(S[size_t(i)], r) : best_rotation(S[size_t(i)]);
+  }
 }
 
 Eigen::SparseMatrix<double> beta_laplacian(const UnfoldProblem& problem) {
   std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(size_t(problem.num_vertices()) + 4 * size_t(problem.graph->num_edges()));
   for (const auto& term : problem.terms)
     if (term->scales_with_beta()) term->add_growth_hessian(0.5 * term->weight(1.0), &triplets);
   Eigen::SparseMatrix<double> L(problem.num_vertices(), problem.num_vertices());

@@ -25,7 +25,9 @@ double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, con
                     double beta, Eigen::MatrixX3d* grad = nullptr);
 
 /// The local step: per vertex, the rotation minimising the rotation-dependent
-/// terms at beta (their weighted cell covariances summed), in parallel over vertices.
+/// terms at beta (their weighted cell covariances summed), in parallel over
+/// vertices. When R holds n rotations already (the previous iteration's), they
+/// are refined from (best_rotation with a guess); the result is the same to ~1e-12.
 /// @param covariances optional buffer for the n cell covariances, so that
 ///        repeated calls allocate nothing
 void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, double beta,
