@@ -1,5 +1,6 @@
 #include "energies/arap_energy.h"
 
+#include "core/parallel.h"
 #include "energies/jet_evaluation.h"
 #include "energies/row_major.h"
 
@@ -50,7 +51,7 @@ void ArapEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* 
 
 void ArapEnergy::add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const {
   // B_i = sum_j w_ij (R_i + R_j)(p_i - p_j) = R_i (L_w P)_i + sum_j R_j w_ij (p_i - p_j).
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (graph_.num_vertices >= kMinParallelRows)
   for (int i = 0; i < graph_.num_vertices; ++i) {
     Eigen::Vector3d b = R[size_t(i)] * weighted_laplacian_rest_.row(i).transpose();
     for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k)
@@ -62,7 +63,7 @@ void ArapEnergy::add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* 
 void ArapEnergy::add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
                                          std::vector<Eigen::Matrix3d>* S) const {
   const RowMatrixX3d q = Q;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (graph_.num_vertices >= kMinParallelRows)
   for (int i = 0; i < graph_.num_vertices; ++i) {
     // sum_j w_ij e_ij (q_i - q_j)^T = (L_w P)_i q_i^T - sum_j w_ij e_ij q_j^T
     Eigen::Matrix3d s = weighted_laplacian_rest_.row(i).transpose() * q.row(i);

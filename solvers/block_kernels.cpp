@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/parallel.h"
+
 namespace unfold {
 namespace {
 
@@ -13,7 +15,7 @@ template <typename RowSum>
 Eigen::Array3d chunked_sum(int n, const RowSum& row_sum) {
   Eigen::Array3d partial[kChunks];
   const int size = (n + kChunks - 1) / kChunks;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
   for (int c = 0; c < kChunks; ++c) {
     Eigen::Array3d s = Eigen::Array3d::Zero();
     for (int i = c * size; i < std::min(n, (c + 1) * size); ++i) s += row_sum(i);
@@ -45,7 +47,7 @@ void multiply(const CsrView& A, const RowMatrixX3d& X, RowMatrixX3d* Y) {
   Y->resize(A.rows, 3);
   const double* x = X.data();
   double* y = Y->data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (A.rows >= kMinParallelRows)
   for (int i = 0; i < A.rows; ++i) {
     double s0 = 0, s1 = 0, s2 = 0;
     for (int k = A.outer[i]; k < A.outer[i + 1]; ++k) {
@@ -66,7 +68,7 @@ void residual(const CsrView& A, const RowMatrixX3d& B, const RowMatrixX3d& X, Ro
   const double* x = X.data();
   const double* b = B.data();
   double* r = R->data();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (A.rows >= kMinParallelRows)
   for (int i = 0; i < A.rows; ++i) {
     double s0 = b[3 * size_t(i)], s1 = b[3 * size_t(i) + 1], s2 = b[3 * size_t(i) + 2];
     for (int k = A.outer[i]; k < A.outer[i + 1]; ++k) {
@@ -94,7 +96,7 @@ void remove_column_means(RowMatrixX3d* X) {
   const Eigen::Array3d mean =
       chunked_sum(n, [&](int i) { return X->row(i).array().transpose().eval(); }) / double(n);
   const Eigen::RowVector3d m = mean.transpose().matrix();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
   for (int i = 0; i < n; ++i) X->row(i) -= m;
 }
 

@@ -2,13 +2,15 @@
 
 #include <cmath>
 
+#include "core/parallel.h"
+
 namespace unfold {
 namespace {
 
 // Per column k: Y.col(k) += a[k] X.col(k).
 void add_scaled(const Eigen::Array3d& a, const RowMatrixX3d& X, RowMatrixX3d* Y) {
   const Eigen::RowVector3d s = a.transpose().matrix();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (X.rows() >= kMinParallelRows)
   for (int i = 0; i < int(X.rows()); ++i) Y->row(i) += s.cwiseProduct(X.row(i));
 }
 
@@ -67,7 +69,7 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
     rz = rz_next;
     // p = z + beta p, column by column (inactive columns keep their p unused).
     const Eigen::RowVector3d s = beta.transpose().matrix();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (p.rows() >= kMinParallelRows)
     for (int i = 0; i < int(p.rows()); ++i) p.row(i) = z.row(i) + s.cwiseProduct(p.row(i));
   }
   remove_column_means(x);

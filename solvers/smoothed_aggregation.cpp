@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/parallel.h"
 
 namespace unfold {
 namespace {
@@ -115,7 +116,7 @@ void chebyshev(const AmgLevel& level, const AmgOptions& options, const RowMatrix
   }
   d.resize(n, 3);
   const Eigen::VectorXd& dinv = level.inverse_diagonal;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
   for (int i = 0; i < n; ++i) d.row(i) = (dinv[i] / theta) * r.row(i);
   for (int k = 1;; ++k) {
     *x += d;
@@ -123,21 +124,21 @@ void chebyshev(const AmgLevel& level, const AmgOptions& options, const RowMatrix
     residual(A, r, d, &r);  // r -= A d
     const double rho_next = 1 / (2 * sigma - rho);
     const double keep = rho_next * rho, step = 2 * rho_next / delta;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
     for (int i = 0; i < n; ++i) d.row(i) = keep * d.row(i) + (step * dinv[i]) * r.row(i);
     rho = rho_next;
   }
 }
 
 // Inverse on the complement of the null space, eigenvalues at roundoff level
-// dropped: coarse Laplacians keep the constant vector in their null space.
+// dropped: the coarse Laplacian keeps the constant vector in its null space.
 Eigen::MatrixXd pseudo_inverse(const Eigen::MatrixXd& A) {
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
   const Eigen::VectorXd& values = eig.eigenvalues();
   const double cutoff = 1e-10 * values.cwiseAbs().maxCoeff();
   Eigen::VectorXd inverse(values.size());
   for (Eigen::Index k = 0; k < values.size(); ++k)
-    inverse[k] = std::abs(values[k]) > cutoff ? 1 / values[k] : 0;
+    inverse[k] = values[k] > cutoff ? 1 / values[k] : 0;
   return eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
 }
 
@@ -200,52 +201,6 @@ void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& 
   }
   data->operator_complexity = nonzeros / finest;
   data->coarse_inverse = pseudo_inverse(Eigen::MatrixXd(data->levels.back().A));
-}
-
-void amg_pencil_precomputation(const AmgData& data, const Eigen::SparseMatrix<double>& F,
-                               const Eigen::SparseMatrix<double>& B, AmgPencil* pencil) {
-  const size_t levels = data.levels.size();
-  pencil->F.resize(levels);
-  pencil->B.resize(levels);
-  RowSparse f(F), b(B);
-  Eigen::VectorXd constant = Eigen::VectorXd::Ones(F.rows());
-  for (size_t l = 0;; ++l) {
-    // One pattern for both: the union, explicit zeros kept.
-    RowSparse zero_f = 0.0 * f, zero_b = 0.0 * b;
-    pencil->F[l] = f + zero_b;
-    pencil->B[l] = b + zero_f;
-    pencil->F[l].makeCompressed();
-    pencil->B[l].makeCompressed();
-    if (l + 1 == levels) break;
-    const AmgLevel& level = data.levels[l];
-    const RowSparse fP = f * level.P, bP = b * level.P;
-    f = level.R * fP;
-    b = level.R * bP;
-    constant = level.R * constant;
-  }
-  pencil->coarse_constant = constant;
-}
-
-void amg_set_pencil(const AmgPencil& pencil, double beta, AmgData* data) {
-  for (size_t l = 0; l < data->levels.size(); ++l) {
-    AmgLevel& level = data->levels[l];
-    level.A = pencil.F[l];
-    Eigen::Map<Eigen::VectorXd>(level.A.valuePtr(), level.A.nonZeros()) +=
-        beta * Eigen::Map<const Eigen::VectorXd>(pencil.B[l].valuePtr(), pencil.B[l].nonZeros());
-    build_level(&level);
-  }
-  // The fine operator's Rayleigh quotient at the constant vector: negative for
-  // the stretch term. Galerkin carries 1^T A 1 to the coarsest level exactly.
-  const RowSparse& fine = data->levels.front().A;
-  const double n = double(fine.rows());
-  const double constant_value =
-      Eigen::VectorXd::Ones(fine.rows()).dot(fine * Eigen::VectorXd::Ones(fine.rows())) / n;
-  Eigen::MatrixXd coarse = Eigen::MatrixXd(data->levels.back().A);
-  if (constant_value < 0) {
-    const Eigen::VectorXd& v = pencil.coarse_constant;
-    coarse += (-2 * constant_value / n) * v * v.transpose();
-  }
-  data->coarse_inverse = pseudo_inverse(coarse);
 }
 
 void amg_vcycle(const AmgData& data, const RowMatrixX3d& b, RowMatrixX3d* x) {

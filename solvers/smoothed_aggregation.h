@@ -19,8 +19,8 @@ struct AmgOptions {
   int max_levels = 20;       ///< levels at most
   double strength = 0.0;     ///< strong connection: |a_ij| > strength sqrt(a_ii a_jj)
   int smoothing_degree = 2;  ///< Chebyshev polynomial degree, pre and post
-  double smoothing_ratio =
-      30;  ///< the smoother damps eigenvalues of D^-1 A above lambda_max / ratio
+  /// the smoother damps the eigenvalues of D^-1 A in [lambda_max / ratio, lambda_max]
+  double smoothing_ratio = 10;
 };
 
 struct AmgLevel {
@@ -46,28 +46,6 @@ struct AmgData {
 /// @throws UsageError if M is not square or has a non-positive diagonal entry
 void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& options,
                         AmgData* data);
-
-/// Galerkin coarse operators of two matrices on a hierarchy's levels, for the
-/// pencil F + beta B: the unfolding's global matrix is one, and an AMG of
-/// the pencil itself (not of the Laplacian alone) also corrects the
-/// stretch term's shift on the coarse levels, where it matters most.
-struct AmgPencil {
-  std::vector<RowSparse> F, B;      ///< per level, one pattern per level
-  Eigen::VectorXd coarse_constant;  ///< the constant vector restricted to the coarsest level
-};
-
-/// @param data a hierarchy from amg_precomputation (its transfer operators are used)
-/// @param F, B symmetric, the size of data's finest level
-void amg_pencil_precomputation(const AmgData& data, const Eigen::SparseMatrix<double>& F,
-                               const Eigen::SparseMatrix<double>& B, AmgPencil* pencil);
-
-/// Makes every level's operator F_l + beta B_l (smoother data and coarse
-/// solve included). When the constant vector is a negative direction of the
-/// fine operator (the stretch term's -n I), the coarsest solve adds the
-/// rank-one term that flips it, so the cycle stays positive definite on
-/// zero-mean vectors.
-/// @pre F + beta B has a positive diagonal on every level
-void amg_set_pencil(const AmgPencil& pencil, double beta, AmgData* data);
 
 /// One V-cycle for M x = b from x = 0: an approximation of M^+ b, symmetric
 /// positive definite in b on the complement of the constant vector.

@@ -1,5 +1,7 @@
 #include "solvers/unfold_problem.h"
 
+#include "core/parallel.h"
+
 namespace unfold {
 
 double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, const Rotations& R,
@@ -19,7 +21,7 @@ void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, doub
   std::vector<Eigen::Matrix3d> local;
   std::vector<Eigen::Matrix3d>& S = covariances ? *covariances : local;
   S.resize(size_t(n));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
   for (int i = 0; i < n; ++i) S[size_t(i)].setZero();
   bool any = false;
   for (const auto& term : problem.terms)
@@ -31,7 +33,7 @@ void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, doub
   // starting guesses: cells turn little from one iteration to the next.
   const bool warm = R->size() == size_t(n);
   R->resize(size_t(n));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
   for (int i = 0; i < n; ++i) {
     Eigen::Matrix3d& r = (*R)[size_t(i)];
     if (!any || S[size_t(i)].isZero(0))

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <cmath>
 
 #include "solvers/best_rotations.h"
 #include "solvers/cascade.h"
@@ -34,6 +36,29 @@ TEST(SolverRotation, NeverReturnsAReflection) {
   for (const auto& Ri : R) {
     EXPECT_NEAR(Ri.determinant(), 1.0, 1e-12);
     EXPECT_LT((Ri * Ri.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+  }
+}
+
+// cov = H R0^T with H symmetric positive definite: the best rotation is R0.
+Eigen::Matrix3d covariance_for(const Eigen::Matrix3d& R0, unsigned seed) {
+  std::srand(seed);
+  const Eigen::Matrix3d A = Eigen::Matrix3d::Random();
+  const Eigen::Matrix3d H = A * A.transpose() + 0.2 * Eigen::Matrix3d::Identity();
+  return H * R0.transpose();
+}
+
+TEST(SolverRotation, RefinedFromAGuessAgreesWithTheColdFit) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const Eigen::Matrix3d R0 = test::random_rotation(seed);
+    const Eigen::Matrix3d cov = covariance_for(R0, seed + 100);
+    ASSERT_LT((best_rotation(cov) - R0).norm(), 1e-12);
+    // Near guesses (Newton), a far one and the opposite critical point (fallback).
+    for (const double angle : {1e-4, 0.05, 0.4, 3.0, M_PI}) {
+      const Eigen::Matrix3d turn =
+          Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, -1).normalized()).toRotationMatrix();
+      EXPECT_LT((best_rotation(cov, R0 * turn) - R0).norm(), 1e-11)
+          << "seed " << seed << ", guess " << angle << " rad off";
+    }
   }
 }
 

@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <set>
+#include <vector>
 
 #include "core/errors.h"
 #include "mesh/read_surface_mesh.h"
+#include "mesh/sort_interior_vertices.h"
 #include "test_meshes.h"
 
 namespace unfold {
@@ -37,6 +41,41 @@ TEST(Tetrahedralize, KeepsSurfaceVerticesFirstAndFillsTheVolume) {
   const double sphere_volume = 4.0 / 3.0 * M_PI * 8.0;
   EXPECT_GT(total_volume(tets), 0.9 * sphere_volume);
   EXPECT_LT(total_volume(tets), sphere_volume);
+}
+
+// Sorting the interior vertices renumbers them only: surface rows stay, the
+// tets are the same tets (as sets of positions), interior keys ascend.
+TEST(Tetrahedralize, InteriorVerticesSortedAlongAZCurveKeepTheMesh) {
+  TetOptions options;
+  options.max_volume = 0.01;  // interior points
+  const TetMesh before = tetrahedralize(test::uv_sphere(10, 20, 1.0), options);
+  ASSERT_GT(before.V.rows() - before.num_surface_vertices, 20);
+  TetMesh after = before;
+  sort_interior_vertices(&after);
+  const int first = before.num_surface_vertices;
+  EXPECT_EQ(after.V.topRows(first), before.V.topRows(first));
+  const auto tet_positions = [](const TetMesh& m) {
+    std::multiset<std::vector<double>> tets;
+    for (Eigen::Index t = 0; t < m.T.rows(); ++t) {
+      std::vector<std::vector<double>> corners;
+      for (int c = 0; c < 4; ++c)
+        corners.push_back({m.V(m.T(t, c), 0), m.V(m.T(t, c), 1), m.V(m.T(t, c), 2)});
+      std::sort(corners.begin(), corners.end());
+      std::vector<double> flat;
+      for (const auto& corner : corners) flat.insert(flat.end(), corner.begin(), corner.end());
+      tets.insert(flat);
+    }
+    return tets;
+  };
+  EXPECT_EQ(tet_positions(after), tet_positions(before));
+  // Consecutive interior vertices are close: much closer than in TetGen's order.
+  const auto mean_step = [first](const TetMesh& m) {
+    double sum = 0;
+    for (Eigen::Index i = first + 1; i < m.V.rows(); ++i)
+      sum += (m.V.row(i) - m.V.row(i - 1)).norm();
+    return sum / double(m.V.rows() - first - 1);
+  };
+  EXPECT_LT(mean_step(after), 0.6 * mean_step(before));
 }
 
 TEST(Tetrahedralize, SelfIntersectingSurfaceIsAnErrorNotACrash) {

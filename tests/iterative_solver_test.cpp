@@ -1,0 +1,241 @@
+// The iterative linear solver for large meshes: the AMG V-cycle is a symmetric
+// positive definite preconditioner that converges, projected CG solves the
+// global system to its tolerance and notices an unbounded energy, LOBPCG finds
+// the smallest Laplacian eigenvalues, and the cascade on the iterative solver
+// ends where the direct one does.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "shapes/articulated_shape.h"
+#include "solvers/cascade.h"
+#include "solvers/fiedler_value.h"
+#include "solvers/lobpcg.h"
+#include "solvers/local_global.h"
+#include "solvers/projected_cg.h"
+#include "solvers/smoothed_aggregation.h"
+#include "solvers/sparse_ldlt.h"
+#include "test_meshes.h"
+#include "test_problem.h"
+#include "tetra/tetrahedralize.h"
+
+namespace unfold {
+namespace {
+
+// 17 x 6 x 6 = 612 vertices: enough for an AMG hierarchy of two levels.
+TetMesh bar() { return test::grid_tet_mesh(16, 5, 5, 0.5); }
+
+RowMatrixX3d random_zero_mean(int n, unsigned seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal;
+  RowMatrixX3d X(n, 3);
+  for (Eigen::Index i = 0; i < X.size(); ++i) X.data()[i] = normal(random);
+  remove_column_means(&X);
+  return X;
+}
+
+struct LaplacianFixture {
+  EdgeGraph graph;
+  Eigen::SparseMatrix<double> L;
+  AmgData amg;
+  int n = 0;
+  explicit LaplacianFixture(const TetMesh& mesh)
+      : graph(build_edge_graph(int(mesh.V.rows()), mesh.T)), L(graph_laplacian(graph)) {
+    n = graph.num_vertices;
+    amg_precomputation(L, AmgOptions{}, &amg);
+  }
+};
+
+TEST(Amg, VCycleIsSymmetricAndPositiveDefiniteOnZeroMeanBlocks) {
+  const LaplacianFixture f(bar());
+  ASSERT_GE(f.amg.levels.size(), 2u);
+  EXPECT_LT(f.amg.levels[1].A.rows(), f.n / 4);  // it really coarsens
+  const RowMatrixX3d x = random_zero_mean(f.n, 1), y = random_zero_mean(f.n, 2);
+  RowMatrixX3d Bx, By;
+  amg_vcycle(f.amg, x, &Bx);
+  amg_vcycle(f.amg, y, &By);
+  const Eigen::Array3d yBx = column_dots(y, Bx), xBy = column_dots(x, By);
+  const Eigen::Array3d xBx = column_dots(x, Bx);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(yBx[k], xBy[k], 1e-10 * xBx[k]);
+    EXPECT_GT(xBx[k], 0);
+  }
+}
+
+TEST(Amg, AsAStationaryIterationItConverges) {
+  const LaplacianFixture f(bar());
+  const RowMatrixX3d b = random_zero_mean(f.n, 3);
+  // The exact zero-mean solution, from the dense pseudo-inverse.
+  const Eigen::MatrixXd pinv =
+      Eigen::MatrixXd(f.L).completeOrthogonalDecomposition().pseudoInverse();
+  const RowMatrixX3d exact = pinv * Eigen::MatrixX3d(b);
+  RowMatrixX3d x = RowMatrixX3d::Zero(f.n, 3), r, correction;
+  const CsrView L = CsrView::of_symmetric(f.L);
+  double previous = (x - exact).norm();
+  for (int cycle = 0; cycle < 6; ++cycle) {
+    residual(L, b, x, &r);
+    amg_vcycle(f.amg, r, &correction);
+    x += correction;
+    remove_column_means(&x);
+    const double error = (x - exact).norm();
+    EXPECT_LT(error, 0.75 * previous) << "cycle " << cycle;
+    previous = error;
+  }
+}
+
+// The global matrix of the paper's energy, (beta + 1) L - n I.
+Eigen::SparseMatrix<double> global_matrix(const LaplacianFixture& f, double beta) {
+  Eigen::SparseMatrix<double> A = (beta + 1) * f.L;
+  A.diagonal().array() -= f.n;
+  A.makeCompressed();
+  return A;
+}
+
+TEST(ProjectedCg, MatchesTheDirectSolveToItsTolerance) {
+  const LaplacianFixture f(bar());
+  const double beta = 1.5 * f.n / fiedler_value(f.L);
+  const Eigen::SparseMatrix<double> A = global_matrix(f, beta);
+  const RowMatrixX3d b = random_zero_mean(f.n, 4);
+  SparseLdlt ldlt;
+  ldlt.analyze(A);
+  ldlt.factorize(A);
+  Eigen::MatrixX3d direct;
+  ldlt.solve(Eigen::MatrixX3d(b), &direct);
+  direct.rowwise() -= direct.colwise().mean();
+
+  RowMatrixX3d x = RowMatrixX3d::Zero(f.n, 3);
+  const CgResult r = projected_cg(CsrView::of_symmetric(A), f.amg, b, &x, CgOptions{1e-11, 0, 200});
+  EXPECT_TRUE(r.converged);
+  EXPECT_FALSE(r.negative_curvature);
+  EXPECT_LT(r.iterations, 40);
+  EXPECT_LT((Eigen::MatrixX3d(x) - direct).norm(), 1e-9 * direct.norm());
+
+  // From the solution there is nothing left to do.
+  const CgResult again =
+      projected_cg(CsrView::of_symmetric(A), f.amg, b, &x, CgOptions{1e-9, 0, 200});
+  EXPECT_EQ(again.iterations, 0);
+}
+
+TEST(ProjectedCg, ForcingStopsAtAReductionOfTheWarmStartsResidual) {
+  const LaplacianFixture f(bar());
+  const double beta = 1.5 * f.n / fiedler_value(f.L);
+  const Eigen::SparseMatrix<double> A = global_matrix(f, beta);
+  const RowMatrixX3d b = random_zero_mean(f.n, 5);
+  RowMatrixX3d tight = RowMatrixX3d::Zero(f.n, 3), loose = tight;
+  const CgResult t =
+      projected_cg(CsrView::of_symmetric(A), f.amg, b, &tight, CgOptions{1e-12, 0, 200});
+  const CgResult l =
+      projected_cg(CsrView::of_symmetric(A), f.amg, b, &loose, CgOptions{1e-12, 1e-3, 200});
+  EXPECT_TRUE(l.converged);
+  EXPECT_LT(l.iterations, t.iterations);
+  EXPECT_LE(l.relative_residual, 1e-3);  // the warm start (0) had relative residual 1
+  EXPECT_GT(l.relative_residual, 1e-12);
+}
+
+TEST(ProjectedCg, NoticesNegativeCurvatureBelowTheBound) {
+  const LaplacianFixture f(bar());
+  const double bound = f.n / fiedler_value(f.L) - 1;  // (beta + 1) lambda_2 = n
+  const Eigen::SparseMatrix<double> A = global_matrix(f, 0.5 * bound);
+  RowMatrixX3d x = RowMatrixX3d::Zero(f.n, 3);
+  const CgResult r =
+      projected_cg(CsrView::of_symmetric(A), f.amg, random_zero_mean(f.n, 6), &x, CgOptions{});
+  EXPECT_TRUE(r.negative_curvature);
+  EXPECT_FALSE(r.converged);
+}
+
+TEST(Lobpcg, SmallestEigenvaluesMatchTheDenseOnes) {
+  const LaplacianFixture f(test::grid_tet_mesh(13, 7, 5, 0.3));  // no repeated eigenvalues
+  const LobpcgResult r = lobpcg_smallest(CsrView::of_symmetric(f.L), f.amg, LobpcgOptions{1e-10});
+  ASSERT_TRUE(r.converged);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> dense{Eigen::MatrixXd(f.L)};
+  EXPECT_NEAR(r.values[0], dense.eigenvalues()[1], 1e-10 * dense.eigenvalues()[1]);
+  // The other two are only helpers, converged more loosely.
+  EXPECT_NEAR(r.values[1], dense.eigenvalues()[2], 1e-4 * dense.eigenvalues()[2]);
+  EXPECT_NEAR(r.values[2], dense.eigenvalues()[3], 1e-4 * dense.eigenvalues()[3]);
+  EXPECT_LT(r.vectors.colwise().sum().norm(), 1e-10);
+  EXPECT_LT((r.vectors.transpose() * r.vectors - Eigen::Matrix3d::Identity()).norm(), 1e-10);
+}
+
+TEST(FiedlerValue, LobpcgAgreesWithShiftInvertLanczos) {
+  // An irregular mesh: the demo animal, tetrahedralized.
+  const TetMesh tets =
+      tetrahedralize(make_articulated_shape(ShapePose::preset(1), 32), TetOptions{});
+  const LaplacianFixture f(tets);
+  const double direct = fiedler_value(f.L), iterative = fiedler_value(f.L, f.amg);
+  EXPECT_NEAR(iterative, direct, 1e-9 * direct);
+}
+
+// A bar bent into an arc: the cascade has real work to do.
+struct BentBar : test::ProblemFixture {
+  BentBar() : ProblemFixture(bent()) {}
+  static TetMesh bent() {
+    TetMesh mesh = bar();
+    for (Eigen::Index i = 0; i < mesh.V.rows(); ++i) {
+      const double angle = 0.35 * mesh.V(i, 0), radius = 3 + mesh.V(i, 1);
+      mesh.V.row(i) << radius * std::sin(angle), radius * std::cos(angle), mesh.V(i, 2);
+    }
+    return mesh;
+  }
+};
+
+CascadeResult cascade_with(const BentBar& f, const LinearSolverOptions& solver) {
+  CascadeOptions options;
+  options.beta = 1.5 * f.n / f.lambda2;
+  LocalGlobalBackend backend(f.problem, solver);
+  EXPECT_EQ(backend.data().iterative, solver.method == "iterative");
+  return run_cascade(f.problem, backend, options, options.k_iter);
+}
+
+TEST(IterativeCascade, EndsWhereTheDirectSolverEnds) {
+  const BentBar f;
+  const CascadeResult direct = cascade_with(f, LinearSolverOptions{"direct"});
+  const double scale = direct.positions.cwiseAbs().maxCoeff();
+  // Default tolerances: each global step to 1e-3 of its warm start's residual.
+  const CascadeResult fast = cascade_with(f, LinearSolverOptions{"iterative"});
+  EXPECT_EQ(fast.cascades, direct.cascades);
+  EXPECT_NEAR(fast.iterations, direct.iterations, 2);
+  EXPECT_LT((fast.positions - direct.positions).cwiseAbs().maxCoeff(), 1e-3 * scale);
+  EXPECT_NEAR(fast.edge_ratio, direct.edge_ratio, 1e-3);
+  // Every global step solved tightly: the same iterates as the direct solver.
+  LinearSolverOptions tight{"iterative"};
+  tight.cg_tolerance = 1e-12;
+  tight.cg_forcing = 0;
+  const CascadeResult exact = cascade_with(f, tight);
+  EXPECT_EQ(exact.iterations, direct.iterations);
+  EXPECT_LT((exact.positions - direct.positions).cwiseAbs().maxCoeff(), 1e-8 * scale);
+}
+
+TEST(IterativeCascade, EnergyNeverIncreasesWithinACascade) {
+  const BentBar f;
+  const CascadeResult result = cascade_with(f, LinearSolverOptions{"iterative"});
+  ASSERT_GT(result.iterations, 4);
+  for (size_t k = 1; k < result.history.size(); ++k) {
+    if (result.history[k].cascade != result.history[k - 1].cascade) continue;
+    EXPECT_LE(result.history[k].energy,
+              result.history[k - 1].energy + 1e-9 * std::abs(result.history[k - 1].energy))
+        << "iteration " << result.history[k].iteration;
+  }
+}
+
+TEST(GlobalStepEnergy, EqualsTheSumOfTheTermsBothSolvers) {
+  const BentBar f;
+  const double beta = 2 * f.n / f.lambda2;
+  for (const char* method : {"direct", "iterative"}) {
+    LocalGlobalData data;
+    local_global_precomputation(f.problem, &data, LinearSolverOptions{method});
+    local_global_set_beta(beta, &data);
+    Eigen::MatrixX3d Q = f.mesh.V;
+    Q.rowwise() -= Q.colwise().mean();
+    Rotations R;
+    for (int k = 0; k < 3; ++k) {
+      fit_rotations(f.problem, Q, beta, &R);
+      global_step(data, R, &Q);
+      const double swept = total_energy(f.problem, Q, R, beta);
+      EXPECT_NEAR(energy_after_global_step(data, R, Q), swept, 1e-10 * std::abs(swept)) << method;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace unfold
