@@ -2,14 +2,18 @@
 // size, for the scaling table of docs/performance.md (bench/run runs it once
 // per size, each in its own process so that peak memory is per size).
 //   build/bin/scale_bench (--input=MESH | --demo_resolution=R) [--volume_divisions=M]
-//                         [--analyze_only]
+//                         [--analyze_only] [--linear_solver=auto|direct|iterative]
+//   build/bin/scale_bench --plot=CSV --output=PNG
 // --volume_divisions=M bounds every tetrahedron's volume by (enclosed volume) / M
-// (TetGen -a), which adds interior vertices: about M / 5 of them with the
+// (TetGen -a), which adds interior vertices: about M / 4.5 of them with the
 // default quality bound. Prints one tab-separated row:
-//   tet_vertices tets seconds_tet seconds_unfold seconds_metrics iterations
-//   peak_rss_mb peak_rss_tetgen_mb E_str_exact E_geo_sources
-// --analyze_only stops after the symbolic analysis of the global matrix and prints
+//   tet_vertices tets seconds_tet seconds_unfold seconds_metrics seconds_total
+//   iterations linear_solver cg_iterations peak_rss_mb peak_rss_tetgen_mb E_rig edge_ratio
+// (seconds_unfold: AMG setup, lambda_2 and the cascade; seconds_total: the
+// whole unfold_surface call). --analyze_only stops after the direct solver's
+// symbolic analysis and prints
 //   tet_vertices tets seconds_tet seconds_analyze factor_nonzeros factor_gflops peak_rss_mb
+// --plot draws the scaling plot from bench/run's CSV (columns as the row above).
 #include <glog/logging.h>
 #include <sys/resource.h>
 
@@ -17,12 +21,17 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
 #include "pipeline/unfold_surface.h"
+#include "render/plot_scaling.h"
+#include "render/write_png.h"
 #include "shapes/articulated_shape.h"
 #include "solvers/sparse_ldlt.h"
 #include "tetra/tetrahedralize.h"
@@ -46,8 +55,36 @@ double peak_rss_mb(int who) {
   return double(usage.ru_maxrss) / 1024.0;  // Linux reports kilobytes
 }
 
+// The scaling plot from bench/run's CSV: a header line, then one row per size.
+int plot(const std::string& csv, const std::string& png) {
+  std::ifstream in(csv);
+  if (!in) throw UsageError("scale_bench: cannot read '" + csv + "'");
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<double> n, tet, unfold, metrics, total, memory;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::vector<std::string> cells;
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    if (cells.size() < 11) throw UsageError("scale_bench: short row in '" + csv + "': " + line);
+    n.push_back(std::stod(cells[0]));
+    tet.push_back(std::stod(cells[2]));
+    unfold.push_back(std::stod(cells[3]));
+    metrics.push_back(std::stod(cells[4]));
+    total.push_back(std::stod(cells[5]));
+    memory.push_back(std::max(std::stod(cells[9]), std::stod(cells[10])));
+  }
+  write_png(png, plot_scaling(n,
+                              {{"whole run", total},
+                               {"lambda_2 + cascade", unfold},
+                               {"tetrahedralize", tet},
+                               {"metrics", metrics}},
+                              memory));
+  return 0;
+}
+
 int run(int argc, char** argv) {
-  std::string input;
+  std::string input, plot_csv, output, linear_solver = "auto";
   int resolution = 0;
   double divisions = 0;
   bool analyze_only = false;
@@ -64,15 +101,24 @@ int run(int argc, char** argv) {
       divisions = std::stod(value);
     else if (key == "--analyze_only")
       analyze_only = true;
+    else if (key == "--linear_solver")
+      linear_solver = value;
+    else if (key == "--plot")
+      plot_csv = value;
+    else if (key == "--output")
+      output = value;
     else
       throw UsageError("scale_bench: unknown argument '" + arg + "'");
   }
+  if (!plot_csv.empty()) return plot(plot_csv, output);
   if (input.empty() == (resolution == 0))
     throw UsageError("scale_bench: give exactly one of --input and --demo_resolution");
   const SurfaceMesh surface = input.empty()
                                   ? make_articulated_shape(ShapePose::preset(0), resolution)
                                   : read_surface_mesh(input);
   Options options;
+  options.linear_solver.method = linear_solver;
+  validate_options(options);
   if (divisions > 0) options.tet.max_volume = enclosed_volume(surface) / divisions;
   if (analyze_only) {
     TetReport report;
@@ -88,12 +134,15 @@ int run(int argc, char** argv) {
                 peak_rss_mb(RUSAGE_SELF));
     return 0;
   }
+  const auto start = std::chrono::steady_clock::now();
   const UnfoldResult r = unfold_surface(surface, options);
-  std::printf("%d\t%d\t%.3f\t%.3f\t%.3f\t%d\t%.0f\t%.0f\t%d\t%d\n", int(r.tets.V.rows()),
-              int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold, r.metrics.seconds,
-              r.cascade.iterations, peak_rss_mb(RUSAGE_SELF), peak_rss_mb(RUSAGE_CHILDREN),
-              int(r.metrics.E_str_exact),
-              r.metrics.E_geo_exact ? -1 : options.geodesic_metric.sources);
+  const double total =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%d\t%s\t%d\t%.0f\t%.0f\t%.4f\t%.4f\n",
+              int(r.tets.V.rows()), int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold,
+              r.metrics.seconds, total, r.cascade.iterations, r.linear_solver.c_str(),
+              r.cg.iterations, peak_rss_mb(RUSAGE_SELF), peak_rss_mb(RUSAGE_CHILDREN),
+              r.metrics.E_rig, r.cascade.edge_ratio);
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/color_map.h"
 #include "render/plot_convergence.h"
+#include "render/plot_scaling.h"
 #include "render/rasterize.h"
 #include "render/render_comparison.h"
 #include "render/write_png.h"
@@ -233,6 +234,20 @@ TEST(PlotConvergence, DrawsBothSeries) {
   EXPECT_GT(count_pixels(image, {31, 119, 180}), 50);  // energy line
   EXPECT_GT(count_pixels(image, {214, 39, 40}), 50);   // edge-ratio line
   EXPECT_THROW(plot_convergence({}, {0.95, 1.05}), UsageError);
+}
+
+TEST(PlotScaling, DrawsTimeAndMemoryPanels) {
+  const std::vector<double> n = {5e3, 2e4, 5e4, 1e5};
+  const Image image =
+      plot_scaling(n, {{"whole run", {0.5, 2, 5, 10}}, {"cascade", {0.2, 1, 2.5, 5}}},
+                   {40, 120, 300, 600}, 600, 300);
+  EXPECT_EQ(image.width, 600);
+  EXPECT_GT(count_pixels(image, {31, 119, 180}), 80);   // first time series
+  EXPECT_GT(count_pixels(image, {214, 39, 40}), 80);    // second
+  EXPECT_GT(count_pixels(image, {148, 103, 189}), 80);  // memory
+  EXPECT_THROW(plot_scaling({1e3}, {}, {1}), UsageError);
+  EXPECT_THROW(plot_scaling(n, {{"short", {1, 2}}}, {1, 2, 3, 4}), UsageError);
+  EXPECT_THROW(plot_scaling({2e3, 1e3}, {}, {1, 2}), UsageError);
 }
 
 TEST(WritePng, RefusesOtherFormatsAndWritesNothing) {
