@@ -5,28 +5,7 @@
 #include "core/parallel.h"
 
 namespace unfold {
-namespace {
-
-// Reductions add per-chunk partial sums in chunk order: the chunks are fixed by
-// n alone, so the sum is the same for any number of threads.
-constexpr int kChunks = 64;
-
-template <typename RowSum>
-Eigen::Array3d chunked_sum(int n, const RowSum& row_sum) {
-  Eigen::Array3d partial[kChunks];
-  const int size = (n + kChunks - 1) / kChunks;
-#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
-  for (int c = 0; c < kChunks; ++c) {
-    Eigen::Array3d s = Eigen::Array3d::Zero();
-    for (int i = c * size; i < std::min(n, (c + 1) * size); ++i) s += row_sum(i);
-    partial[c] = s;
-  }
-  Eigen::Array3d total = Eigen::Array3d::Zero();
-  for (const auto& s : partial) total += s;
-  return total;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 CsrView::CsrView(const RowSparse& A)
     : rows(int(A.rows())),
@@ -85,7 +64,7 @@ void residual(const CsrView& A, const RowMatrixX3d& B, const RowMatrixX3d& X, Ro
 }
 
 Eigen::Array3d column_dots(const RowMatrixX3d& X, const RowMatrixX3d& Y) {
-  return chunked_sum(int(X.rows()), [&](int i) {
+  return chunked_row_sum(int(X.rows()), [&](int i) {
     return (X.row(i).array() * Y.row(i).array()).transpose().eval();
   });
 }
@@ -94,7 +73,7 @@ void remove_column_means(RowMatrixX3d* X) {
   const int n = int(X->rows());
   if (n == 0) return;
   const Eigen::Array3d mean =
-      chunked_sum(n, [&](int i) { return X->row(i).array().transpose().eval(); }) / double(n);
+      chunked_row_sum(n, [&](int i) { return X->row(i).array().transpose().eval(); }) / double(n);
   const Eigen::RowVector3d m = mean.transpose().matrix();
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
   for (int i = 0; i < n; ++i) X->row(i) -= m;

@@ -29,7 +29,7 @@ namespace unfold {
 
 struct LinearSolverOptions {
   std::string method = "auto";   ///< direct (sparse LDL^T), iterative (AMG + CG) or auto
-  int iterative_from = 50000;    ///< auto: iterative from this many vertices on
+  int iterative_from = 20000;    ///< auto: iterative from this many vertices on
   double cg_tolerance = 1e-8;    ///< iterative: relative residual of each global step at least
   double cg_forcing = 1e-3;      ///< iterative: or this reduction of the warm start's residual
   int cg_max_iterations = 1000;  ///< iterative: CG iterations per global step at most

@@ -7,11 +7,28 @@
 namespace unfold {
 namespace {
 
-// Per column k: Y.col(k) += a[k] X.col(k).
-void add_scaled(const Eigen::Array3d& a, const RowMatrixX3d& X, RowMatrixX3d* Y) {
-  const Eigen::RowVector3d s = a.transpose().matrix();
-#pragma omp parallel for schedule(static) if (X.rows() >= kMinParallelRows)
-  for (int i = 0; i < int(X.rows()); ++i) Y->row(i) += s.cwiseProduct(X.row(i));
+using Array6d = Eigen::Array<double, 6, 1>;
+
+// z = one V-cycle on r; returns r^T z and z's column means from one sweep
+// (r has zero mean, so r^T z is the same once z's mean is removed).
+Array6d precondition(const AmgData& amg, const RowMatrixX3d& r, RowMatrixX3d* z) {
+  amg_vcycle(amg, r, z);
+  const int n = int(r.rows());
+  Array6d sums = chunked_row_sum(n, [&](int i) {
+    Array6d v;
+    v << (r.row(i).array() * z->row(i).array()).transpose(), z->row(i).array().transpose();
+    return v;
+  });
+  sums.tail<3>() /= n;
+  return sums;
+}
+
+// p = (z - mean) + beta p, column by column.
+void update_direction(const RowMatrixX3d& z, const Eigen::Array3d& mean, const Eigen::Array3d& beta,
+                      RowMatrixX3d* p) {
+  const Eigen::RowVector3d m = mean.transpose().matrix(), s = beta.transpose().matrix();
+#pragma omp parallel for schedule(static) if (z.rows() >= kMinParallelRows)
+  for (int i = 0; i < int(z.rows()); ++i) p->row(i) = (z.row(i) - m) + s.cwiseProduct(p->row(i));
 }
 
 }  // namespace
@@ -19,6 +36,7 @@ void add_scaled(const Eigen::Array3d& a, const RowMatrixX3d& X, RowMatrixX3d* Y)
 CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const RowMatrixX3d& b,
                       RowMatrixX3d* x, const CgOptions& options, CgWorkspace* workspace) {
   CgResult result;
+  const int n = A.rows;
   remove_column_means(x);
   const Eigen::Array3d b_norm = column_dots(b, b).sqrt();
   CgWorkspace local;
@@ -27,19 +45,19 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
   residual(A, b, *x, &r);
   remove_column_means(&r);
   Eigen::Array3d active = Eigen::Array3d::Ones();  // columns still iterating
-  const auto relative = [&](const Eigen::Array3d& r_norm) {
+  const auto relative = [&](const Eigen::Array3d& r_squared) {
     Eigen::Array3d rel;
-    for (int k = 0; k < 3; ++k) rel[k] = b_norm[k] > 0 ? r_norm[k] / b_norm[k] : 0.0;
+    for (int k = 0; k < 3; ++k) rel[k] = b_norm[k] > 0 ? std::sqrt(r_squared[k]) / b_norm[k] : 0.0;
     return rel;
   };
-  Eigen::Array3d rel = relative(column_dots(r, r).sqrt());
+  Eigen::Array3d rel = relative(column_dots(r, r));
   const Eigen::Array3d target = (options.forcing * rel).max(options.tolerance);
   for (int k = 0; k < 3; ++k)
     if (rel[k] <= options.tolerance) active[k] = 0;
-  amg_vcycle(preconditioner, r, &z);
-  remove_column_means(&z);
-  p = z;
-  Eigen::Array3d rz = column_dots(r, z);
+  Array6d pre = precondition(preconditioner, r, &z);
+  Eigen::Array3d rz = pre.head<3>();
+  p.setZero(n, 3);
+  update_direction(z, pre.tail<3>(), Eigen::Array3d::Zero(), &p);
   while (active.any() && result.iterations < options.max_iterations) {
     ++result.iterations;
     multiply(A, p, &q);
@@ -54,23 +72,22 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
       }
       alpha[k] = rz[k] / pq[k];
     }
-    add_scaled(alpha, p, x);
-    add_scaled(-alpha, q, &r);
-    rel = relative(column_dots(r, r).sqrt());
+    // x += alpha p, r -= alpha q and |r|^2, in one sweep.
+    const Eigen::RowVector3d a = alpha.transpose().matrix();
+    rel = relative(chunked_row_sum(n, [&](int i) {
+      x->row(i) += a.cwiseProduct(p.row(i));
+      r.row(i) -= a.cwiseProduct(q.row(i));
+      return r.row(i).array().square().transpose().eval();
+    }));
     for (int k = 0; k < 3; ++k)
       if (rel[k] <= target[k]) active[k] = 0;
     if (!active.any()) break;
-    amg_vcycle(preconditioner, r, &z);
-    remove_column_means(&z);
-    const Eigen::Array3d rz_next = column_dots(r, z);
+    pre = precondition(preconditioner, r, &z);
     Eigen::Array3d beta = Eigen::Array3d::Zero();
     for (int k = 0; k < 3; ++k)
-      if (active[k] && rz[k] != 0) beta[k] = rz_next[k] / rz[k];
-    rz = rz_next;
-    // p = z + beta p, column by column (inactive columns keep their p unused).
-    const Eigen::RowVector3d s = beta.transpose().matrix();
-#pragma omp parallel for schedule(static) if (p.rows() >= kMinParallelRows)
-    for (int i = 0; i < int(p.rows()); ++i) p.row(i) = z.row(i) + s.cwiseProduct(p.row(i));
+      if (active[k] && rz[k] != 0) beta[k] = pre[k] / rz[k];
+    rz = pre.head<3>();
+    update_direction(z, pre.tail<3>(), beta, &p);
   }
   remove_column_means(x);
   result.relative_residual = rel.maxCoeff();

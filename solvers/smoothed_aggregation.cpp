@@ -108,24 +108,31 @@ void chebyshev(const AmgLevel& level, const AmgOptions& options, const RowMatrix
   double rho = 1 / sigma;
   RowMatrixX3d& r = level.r;
   RowMatrixX3d& d = level.d;
+  const Eigen::VectorXd& dinv = level.inverse_diagonal;
+  // First step: d = D^-1 r / theta with r = b - A x (= b from x = 0), x += d.
   if (zero_initial) {
-    r = b;
-    x->setZero(n, 3);
+    d.resize(n, 3);
+    x->resize(n, 3);
+#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
+    for (int i = 0; i < n; ++i) x->row(i) = d.row(i) = (dinv[i] / theta) * b.row(i);
   } else {
     residual(A, b, *x, &r);
-  }
-  d.resize(n, 3);
-  const Eigen::VectorXd& dinv = level.inverse_diagonal;
+    d.resize(n, 3);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
-  for (int i = 0; i < n; ++i) d.row(i) = (dinv[i] / theta) * r.row(i);
-  for (int k = 1;; ++k) {
-    *x += d;
-    if (k == options.smoothing_degree) break;
-    residual(A, r, d, &r);  // r -= A d
+    for (int i = 0; i < n; ++i) {
+      d.row(i) = (dinv[i] / theta) * r.row(i);
+      x->row(i) += d.row(i);
+    }
+  }
+  for (int k = 2; k <= options.smoothing_degree; ++k) {
+    residual(A, k == 2 && zero_initial ? b : r, d, &r);  // r -= A d (r = b - A d the first time)
     const double rho_next = 1 / (2 * sigma - rho);
     const double keep = rho_next * rho, step = 2 * rho_next / delta;
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
-    for (int i = 0; i < n; ++i) d.row(i) = keep * d.row(i) + (step * dinv[i]) * r.row(i);
+    for (int i = 0; i < n; ++i) {
+      d.row(i) = keep * d.row(i) + (step * dinv[i]) * r.row(i);
+      x->row(i) += d.row(i);
+    }
     rho = rho_next;
   }
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <random>
 
+#include "energies/user_pairs_energy.h"
 #include "shapes/articulated_shape.h"
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
@@ -168,7 +169,7 @@ TEST(FiedlerValue, LobpcgAgreesWithShiftInvertLanczos) {
 
 // A bar bent into an arc: the cascade has real work to do.
 struct BentBar : test::ProblemFixture {
-  BentBar() : ProblemFixture(bent()) {}
+  explicit BentBar(const EnergyOptions& energy = {}) : ProblemFixture(bent(), energy) {}
   static TetMesh bent() {
     TetMesh mesh = bar();
     for (Eigen::Index i = 0; i < mesh.V.rows(); ++i) {
@@ -204,6 +205,27 @@ TEST(IterativeCascade, EndsWhereTheDirectSolverEnds) {
   const CascadeResult exact = cascade_with(f, tight);
   EXPECT_EQ(exact.iterations, direct.iterations);
   EXPECT_LT((exact.positions - direct.positions).cwiseAbs().maxCoeff(), 1e-8 * scale);
+}
+
+// The AMG is built from the beta Laplacian whatever the terms: cotangent
+// weights, and user pairs, whose long-range edges join the graph.
+TEST(IterativeCascade, AgreesWithTheDirectSolverForOtherTerms) {
+  EnergyOptions cotangent;
+  cotangent.arap_weights = "cotangent";
+  BentBar with_pairs;
+  UserPair ends;
+  ends.j = with_pairs.n - 1;  // the bar's far corner
+  ends.t = Eigen::Vector3d(-12, 0, 0);
+  with_pairs.problem.terms.push_back(std::make_unique<UserPairsEnergy>(std::vector{ends}, 1.0));
+  with_pairs.lambda2 = fiedler_value(beta_laplacian(with_pairs.problem));
+  const BentBar cotangent_bar(cotangent);
+  for (const BentBar* f : std::initializer_list<const BentBar*>{&with_pairs, &cotangent_bar}) {
+    const CascadeResult direct = cascade_with(*f, LinearSolverOptions{"direct"});
+    const CascadeResult fast = cascade_with(*f, LinearSolverOptions{"iterative"});
+    EXPECT_EQ(fast.cascades, direct.cascades);
+    EXPECT_LT((fast.positions - direct.positions).cwiseAbs().maxCoeff(),
+              1e-3 * direct.positions.cwiseAbs().maxCoeff());
+  }
 }
 
 TEST(IterativeCascade, EnergyNeverIncreasesWithinACascade) {
