@@ -155,19 +155,22 @@ TEST(SolverCascade, BreakInBandStopsAtTheFirstIterateInsideElseTheCascadeFinishe
   options.beta = 1.5 * f.n / f.lambda2;
   options.anderson = 0;
   options.edge_ratio_band = {-1, -1};
-  LocalGlobalBackend backend(f.problem);
-  const CascadeResult free = run_cascade(f.problem, backend, options, options.k_iter);
+  const auto run = [&] {  // a fresh backend: the local step warm-starts from its rotations
+    LocalGlobalBackend backend(f.problem);
+    return run_cascade(f.problem, backend, options, options.k_iter);
+  };
+  const CascadeResult free = run();
   ASSERT_GT(free.history.size(), 3u);
   ASSERT_EQ(free.history[2].cascade, 1);
   // A band around the second and third iterates of the first cascade.
   const double a = free.history[1].edge_ratio, b = free.history[2].edge_ratio;
   options.edge_ratio_band = {std::min(a, b), std::max(a, b)};
   options.break_in_band = true;
-  const CascadeResult stopped = run_cascade(f.problem, backend, options, options.k_iter);
+  const CascadeResult stopped = run();
   EXPECT_TRUE(stopped.reached_band);
   EXPECT_EQ(stopped.iterations, 2);
   options.break_in_band = false;
-  const CascadeResult finished = run_cascade(f.problem, backend, options, options.k_iter);
+  const CascadeResult finished = run();
   EXPECT_GT(finished.iterations, 3);
   for (int k = 0; k < 3; ++k)
     EXPECT_EQ(finished.history[size_t(k)].edge_ratio, free.history[size_t(k)].edge_ratio);
