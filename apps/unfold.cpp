@@ -121,9 +121,11 @@ int run() {
 
   const auto& m = result.metrics;
   std::printf(
-      "unfolded %d surface vertices (%d tet vertices, %d tets) in %.2f s: E_rig %.3f, E_str %.3f, "
-      "E_geo %.3f, edge ratio %.3f, %d cascades, %d iterations%s\n",
+      "unfolded %d surface vertices (%d tet vertices, %d tets; %s route, %d intersecting face "
+      "pairs) in %.2f s: E_rig %.3f, E_str %.3f, E_geo %.3f, edge ratio %.3f, %d cascades, %d "
+      "iterations%s\n",
       int(result.surface.V.rows()), int(result.tets.V.rows()), int(result.tets.T.rows()),
+      result.tet_report.route.c_str(), result.tet_report.num_intersecting_faces,
       result.tet_report.seconds + result.seconds_unfold, m.E_rig, m.E_str, m.E_geo,
       result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,
       result.cascade.reached_band ? "" : " (edge-ratio band not reached)");

@@ -34,14 +34,19 @@
   X(beta_growth, "cascade.growth", cascade.growth, "beta factor from one cascade to the next")  \
   X(edge_ratio_band, "cascade.edge_ratio_band", cascade.edge_ratio_band,                        \
     "stop when the mean edge-length ratio is inside [low, high]")                               \
+  X(break_in_band, "cascade.break_in_band", cascade.break_in_band,                              \
+    "true: stop at the first iterate inside the band (the paper's Algorithm 1); false: finish " \
+    "that cascade first (local_global)")                                                        \
+  X(anderson, "cascade.anderson", cascade.anderson,                                             \
+    "Anderson acceleration window of the local_global iterations; 0: plain iterations")         \
   X(linear_solver, "linear_solver.method", linear_solver.method,                                \
     "global step: direct (sparse LDL^T), iterative (AMG-preconditioned CG) or auto "            \
-    "(iterative from linear_solver.iterative_from tet vertices on)")                             \
+    "(iterative from linear_solver.iterative_from tet vertices on)")                            \
   X(iterative_from, "linear_solver.iterative_from", linear_solver.iterative_from,               \
     "auto: the iterative solver from this many tet vertices on")                                \
   X(cg_tolerance, "linear_solver.cg_tolerance", linear_solver.cg_tolerance,                     \
     "iterative: relative residual each global step reaches")                                    \
-  X(cg_forcing, "linear_solver.cg_forcing", linear_solver.cg_forcing,                         \
+  X(cg_forcing, "linear_solver.cg_forcing", linear_solver.cg_forcing,                           \
     "iterative: or each global step reduces its warm start's residual by this factor "          \
     "(0: always cg_tolerance)")                                                                 \
   X(cg_max_iterations, "linear_solver.cg_max_iterations", linear_solver.cg_max_iterations,      \

@@ -190,6 +190,7 @@ void validate_options(const Options& o) {
           "must be a positive finite number");
   const CascadeOptions& c = o.cascade;
   require(c.k_iter >= 1, "cascade.k_iter", "must be at least 1");
+  require(c.anderson >= 0 && c.anderson <= 50, "cascade.anderson", "must be in [0, 50]");
   require(std::isfinite(c.epsilon) && c.epsilon >= 0, "cascade.epsilon",
           "must be a finite number >= 0");
   require(c.num_cascades >= 1, "cascade.num", "must be at least 1");

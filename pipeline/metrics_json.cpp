@@ -74,6 +74,7 @@ void write_metrics_json(const std::string& path, const UnfoldResult& r, const Op
         << ", \"interior_points\": " << r.tet_report.num_interior_points
         << ", \"removed_tets\": " << r.tet_report.num_removed_tets
         << ", \"rescued_tets\": " << r.tet_report.num_rescued_tets
+        << ", \"intersecting_faces\": " << r.tet_report.num_intersecting_faces
         << ", \"fallback\": " << quoted(r.tet_report.fallback)
         << ", \"seconds\": " << number(r.tet_report.seconds) << "},\n"
         << "  \"seconds_tetrahedralize\": " << number(r.tet_report.seconds) << ",\n"

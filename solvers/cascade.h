@@ -19,6 +19,11 @@ struct CascadeOptions {
   int num_cascades = 4;   ///< cascades at most ("num")
   double growth = 2.0;    ///< beta factor between cascades
   std::array<double, 2> edge_ratio_band = {0.95, 1.05};  ///< stop once the edge ratio is inside
+  /// true: stop at the first iterate inside the band (the paper's Algorithm 1);
+  /// false: finish that cascade (epsilon or k_iter) and check the band at its end,
+  /// so that the result is not a transient (local-global; Ceres always finishes)
+  bool break_in_band = true;
+  int anderson = 0;  ///< Anderson acceleration window of local-global; 0: plain iterations
 };
 
 struct IterationRecord {
@@ -26,6 +31,7 @@ struct IterationRecord {
   int cascade;    ///< 1-based
   double beta;
   double energy;      ///< the energy after the iteration, at that iteration's rotations
+                      ///< (with Anderson acceleration: at the new positions' best rotations)
   double edge_ratio;  ///< delta after the iteration
 };
 
@@ -34,6 +40,8 @@ struct StageOptions {
   int max_iterations;
   double epsilon;
   std::array<double, 2> edge_ratio_band;
+  bool break_in_band;  ///< stop at the first iterate inside the band, else at the stage's end
+  int anderson;        ///< Anderson acceleration window (backends that iterate); 0: none
 };
 
 /// A solver backend, as the cascade driver sees it.
@@ -45,8 +53,9 @@ class CascadeBackend {
   /// False if the energy is unbounded below at the current beta (asked after
   /// run_stage, so a backend may find out while iterating).
   virtual bool bounded() const = 0;
-  /// Iterates at the current beta from *Q until the edge ratio is in the band
-  /// (returns true), the energy converges or max_iterations pass (false).
+  /// Iterates at the current beta from *Q until the energy converges or
+  /// max_iterations pass, or (break_in_band) the edge ratio is in the band.
+  /// Returns whether the last iterate's edge ratio is in the band.
   /// @param previous_energy in: f_s; out: the last energy (Algorithm 1's f_e)
   /// @param history         one record appended per iteration
   virtual bool run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,

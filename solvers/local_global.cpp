@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "metrics/edge_ratio.h"
+#include "solvers/anderson_acceleration.h"
 
 namespace unfold {
 namespace {
@@ -171,8 +172,22 @@ void LocalGlobalBackend::set_beta(double beta) { local_global_set_beta(beta, &da
 bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,
                                    double* previous_energy, std::vector<IterationRecord>* history) {
   const UnfoldProblem& problem = *data_.problem;
-  for (int i = 1;; ++i) {
+  const bool accelerate = options.anderson > 0;
+  AndersonAcceleration anderson(std::max(1, options.anderson));
+  // With acceleration the rotations are fitted at the end of each iteration
+  // (the safeguard needs the energy at them), and reused by the next.
+  double level = 0;  // energy of the current iterate at its best rotations
+  const auto fit_and_measure = [&] {
     fit_rotations(problem, *Q, data_.beta, &R_, &covariances_);
+    return total_energy(problem, *Q, R_, data_.beta);
+  };
+  if (accelerate) level = fit_and_measure();
+  const auto in_band = [&](double delta) {
+    return delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1];
+  };
+  for (int i = 1;; ++i) {
+    if (!accelerate) fit_rotations(problem, *Q, data_.beta, &R_, &covariances_);
+    const Eigen::MatrixX3d x = accelerate ? *Q : Eigen::MatrixX3d();
     global_step(data_, R_, Q);
     const int iteration = int(history->size()) + 1;
     if (!Q->allFinite()) {
@@ -181,15 +196,30 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
            << ", beta = " << data_.beta << ")";
       throw NumericalError(what.str());
     }
+    double energy;
+    if (accelerate) {
+      // Accept the extrapolation only if it lowers the energy; the plain
+      // step always does (docs/method.md), so the iterates stay monotone.
+      const Eigen::MatrixX3d plain = *Q;
+      *Q = anderson.next(x.reshaped(), plain.reshaped()).reshaped(Q->rows(), 3);
+      energy = fit_and_measure();
+      if (!(energy <= level)) {
+        anderson.reset();
+        *Q = plain;
+        energy = fit_and_measure();
+      }
+      level = energy;
+    } else {
+      energy = energy_after_global_step(data_, R_, *Q);
+    }
     const double delta = edge_ratio(*problem.graph, problem.rest, *Q);
-    const double energy = energy_after_global_step(data_, R_, *Q);
     history->push_back({iteration, cascade, data_.beta, energy, delta});
     VLOG(1) << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
             << " energy " << energy << " edge ratio " << delta;
-    if (delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1]) return true;
+    if (options.break_in_band && in_band(delta)) return true;
     const bool converged = std::abs(energy / *previous_energy - 1.0) < options.epsilon;
     *previous_energy = energy;
-    if (converged || i >= options.max_iterations) return false;
+    if (converged || i >= options.max_iterations) return in_band(delta);
   }
 }
 

@@ -1,6 +1,7 @@
 // The alternating local-global solver of the paper (Sec. 3-4), libigl style:
 // a precomputation (assembly and symbolic factorization, once per mesh), a
-// per-beta numeric factorization, and cheap iterations that reuse it.
+// per-beta numeric factorization, and cheap iterations that reuse it
+// (optionally Anderson-accelerated, CascadeOptions::anderson).
 //
 // With the rotations fixed, every quadratic term t contributes
 // w_t(beta) (tr(Q^T H_t Q) - 2 tr(Q^T B_t(R))), so the global step solves

@@ -41,7 +41,7 @@ TEST(Cli, DemoRunWritesEveryOutput) {
   for (const char* key :
        {"\"E_rig\"", "\"E_str\"", "\"E_geo\"", "\"edge_ratio\"", "\"iterations\"", "\"cascades\"",
         "\"beta\"", "\"tet_vertices\"", "\"seconds_tetrahedralize\"", "\"seconds_unfold\"",
-        "\"tetrahedralization\": {\"route\": \"conforming\""})
+        "\"tetrahedralization\": {\"route\": \"conforming\"", "\"intersecting_faces\": 0"})
     EXPECT_NE(text.str().find(key), std::string::npos) << key;
   EXPECT_TRUE(file_exists(tets));
 }

@@ -165,9 +165,10 @@ void expect_unfolds(const std::string& relative) {
   EXPECT_GE(r.cascade.edge_ratio, 0.95);
   EXPECT_LE(r.cascade.edge_ratio, 1.05);
   EXPECT_GT(r.metrics.E_str, 0.05);
-  // centaur3 ends at E_rig 1.14 (docs/tetrahedralization.md: the cascade stops
-  // at the first iterate inside the band, at 1.050); checked against its measured
-  // value until the solver work brings it under 1.
+  // centaur3 ends at E_rig 1.14: the paper's cascade stops on a transient while
+  // its back is still straightening (docs/tetrahedralization.md); finishing and
+  // accelerating the iterations brings it to 0.905 but makes canonical forms
+  // less pose-invariant, so the defaults stay the paper's.
   EXPECT_LT(r.metrics.E_rig, relative == "tosca/centaur3.off" ? 1.2 : 1.0);
 }
 
@@ -186,6 +187,19 @@ INSTANTIATE_TEST_SUITE_P(Meshes, RobustSharedData,
 TEST(RobustSharedDataCats, UnfoldWithDefaultSettings) {
   expect_unfolds("tosca/cat0.off");
   expect_unfolds("tosca/cat1.off");
+}
+
+// centaur3's E_rig above 1 is the paper's cascade stopping on a transient
+// (docs/tetrahedralization.md): finished and accelerated, it goes under 1.
+TEST(RobustSharedData, Centaur3UnderOneWithTheCascadeFinished) {
+  const std::string path = test::shared_data("tosca/centaur3.off");
+  if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/centaur3.off";
+  Options options;
+  options.cascade.break_in_band = false;
+  options.cascade.anderson = 5;
+  const UnfoldResult r = unfold_surface(read_surface_mesh(path), options);
+  EXPECT_TRUE(r.cascade.reached_band);
+  EXPECT_LT(r.metrics.E_rig, 1.0);
 }
 
 TEST(RobustSharedData, RobustIsAsGoodAsConformingOnACleanMesh) {

@@ -73,6 +73,7 @@ void expect_same_as_reference(const SurfaceMesh& surface) {
   const TetMesh& tets = f.mesh;
   CascadeOptions options;
   options.beta = 1.5 * g.num_vertices / fiedler_value(graph_laplacian(g));
+  options.anderson = 0;  // plain iterations: the reference replays them one by one
   const int threads = omp_get_max_threads();
   omp_set_num_threads(2);
   LocalGlobalBackend backend(f.problem);

@@ -149,6 +149,35 @@ TEST(SolverCascade, EnergyNeverIncreasesWithinACascade) {
   test::expect_energy_non_increasing_within_cascades(result);
 }
 
+TEST(SolverCascade, BreakInBandStopsAtTheFirstIterateInsideElseTheCascadeFinishes) {
+  Fixture f;
+  CascadeOptions options;
+  options.beta = 1.5 * f.n / f.lambda2;
+  options.anderson = 0;
+  options.edge_ratio_band = {-1, -1};
+  const auto run = [&] {  // a fresh backend: the local step warm-starts from its rotations
+    LocalGlobalBackend backend(f.problem);
+    return run_cascade(f.problem, backend, options, options.k_iter);
+  };
+  const CascadeResult free = run();
+  ASSERT_GT(free.history.size(), 3u);
+  ASSERT_EQ(free.history[2].cascade, 1);
+  // A band around the second and third iterates of the first cascade.
+  const double a = free.history[1].edge_ratio, b = free.history[2].edge_ratio;
+  options.edge_ratio_band = {std::min(a, b), std::max(a, b)};
+  options.break_in_band = true;
+  const CascadeResult stopped = run();
+  EXPECT_TRUE(stopped.reached_band);
+  EXPECT_EQ(stopped.iterations, 2);
+  options.break_in_band = false;
+  const CascadeResult finished = run();
+  EXPECT_GT(finished.iterations, 3);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(finished.history[size_t(k)].edge_ratio, free.history[size_t(k)].edge_ratio);
+  EXPECT_EQ(finished.reached_band, finished.edge_ratio >= options.edge_ratio_band[0] &&
+                                       finished.edge_ratio <= options.edge_ratio_band[1]);
+}
+
 TEST(SolverCascade, RigidInputStaysRigidAndSpreads) {
   // A straight bar is already unfolded: the cascade keeps it close to rigid.
   Fixture f;

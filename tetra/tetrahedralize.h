@@ -15,7 +15,7 @@ struct TetOptions {
   /// "robust": Delaunay of surface and interior points carved by the winding number;
   /// "auto": conforming, and robust when conforming fails.
   std::string route = "auto";
-  double quality = 2.0;  ///< TetGen -q radius-edge bound (conforming route); 0 turns it off
+  double quality = 2.0;   ///< TetGen -q radius-edge bound (conforming route); 0 turns it off
   double max_volume = 0;  ///< TetGen -a bound on tet volume (conforming route); 0: no bound
 };
 
@@ -25,7 +25,10 @@ struct TetReport {
   int num_interior_points = 0;  ///< Steiner points added inside (all after the surface ones)
   int num_removed_tets = 0;     ///< robust: Delaunay tets carved away as outside
   int num_rescued_tets = 0;     ///< robust: carved tets put back to connect every vertex
-  std::string fallback;         ///< auto: why the conforming route failed ("" if it did not)
+  /// pairs of surface triangles that intersect beyond what they share
+  /// (intersecting_face_pairs), counted on every route
+  int num_intersecting_faces = 0;
+  std::string fallback;  ///< auto: why the conforming route failed ("" if it did not)
   double seconds = 0;
 };
 

@@ -1,0 +1,34 @@
+// Anderson acceleration of a fixed-point iteration x <- G(x) (type II, as in
+// Peng et al. 2018, "Anderson Acceleration for Geometry Optimization and
+// Physics Simulation"): the next iterate combines the last few images G(x_k)
+// so that the combined residual G(x) - x is smallest. Local-global ARAP is
+// such an iteration whose slow, low-frequency modes (a long body bending
+// straight) this removes; the caller keeps it safe by checking the energy.
+#pragma once
+
+#include <Eigen/Core>
+#include <deque>
+
+namespace unfold {
+
+class AndersonAcceleration {
+ public:
+  /// @param window how many past steps are combined (m >= 1)
+  explicit AndersonAcceleration(int window) : window_(window) {}
+
+  /// The accelerated successor of x, given g = G(x): g itself on the first
+  /// call after construction or reset(), then g - dG gamma with gamma the
+  /// least-squares fit of the residual f = g - x by the last residual
+  /// differences dF (rank-revealing QR, so repeated steps do no harm).
+  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& g);
+
+  /// Forgets the past steps (e.g. after an extrapolation was rejected).
+  void reset();
+
+ private:
+  int window_;
+  Eigen::VectorXd last_f_, last_g_;
+  std::deque<Eigen::VectorXd> dF_, dG_;
+};
+
+}  // namespace unfold
