@@ -41,9 +41,10 @@
     "Anderson acceleration window of the local_global iterations; 0: plain iterations")         \
   X(linear_solver, "linear_solver.method", linear_solver.method,                                \
     "global step: direct (sparse LDL^T), iterative (AMG-preconditioned CG) or auto "            \
-    "(iterative from linear_solver.iterative_from tet vertices on)")                            \
-  X(iterative_from, "linear_solver.iterative_from", linear_solver.iterative_from,               \
-    "auto: the iterative solver from this many tet vertices on")                                \
+    "(iterative when one factorization would cost more than linear_solver.direct_max_gflop)")   \
+  X(direct_max_gflop, "linear_solver.direct_max_gflop", linear_solver.direct_max_gflop,         \
+    "auto: the direct solver while one factorization (AMD ordering) costs at most this many "   \
+    "GFlop")                                                                                    \
   X(cg_tolerance, "linear_solver.cg_tolerance", linear_solver.cg_tolerance,                     \
     "iterative: relative residual each global step reaches")                                    \
   X(cg_forcing, "linear_solver.cg_forcing", linear_solver.cg_forcing,                           \

@@ -78,7 +78,10 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
   // The iterative solver's AMG hierarchy serves lambda_2 and every global step.
   const Eigen::SparseMatrix<double> L = beta_laplacian(problem);
   std::shared_ptr<AmgData> amg;
-  result.linear_solver = use_iterative_solver(options.linear_solver, n) ? "iterative" : "direct";
+  // Decided once here (it needs a symbolic analysis), for lambda_2 and the backend alike.
+  LinearSolverOptions solver = options.linear_solver;
+  solver.method = use_iterative_solver(solver, L) ? "iterative" : "direct";
+  result.linear_solver = solver.method;
   if (result.linear_solver == "iterative") {
     const auto amg_start = std::chrono::steady_clock::now();
     amg = std::make_shared<AmgData>();
@@ -116,7 +119,7 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
     result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
     return;
   }
-  auto local_global = std::make_unique<LocalGlobalBackend>(problem, options.linear_solver, amg);
+  auto local_global = std::make_unique<LocalGlobalBackend>(problem, solver, amg);
   result.cascade = run_cascade(problem, *local_global, cascade, iterations_per_cascade);
   result.cg = local_global->data().cg_stats;
   if (result.cg.unconverged_solves > 0)

@@ -49,16 +49,16 @@ void assemble_quadratic_part(const UnfoldProblem& problem, LocalGlobalData* data
   assemble(problem, &data->A_fixed, &data->A_beta);
   data->A = data->A_fixed;
   data->A.makeCompressed();
-  if (!data->iterative) data->ldlt.analyze(data->A);
   data->rhs.resize(problem.num_vertices(), 3);
   data->beta = 0;
 }
 
 }  // namespace
 
-bool use_iterative_solver(const LinearSolverOptions& options, int num_vertices) {
-  return options.method == "iterative" ||
-         (options.method == "auto" && num_vertices >= options.iterative_from);
+bool use_iterative_solver(const LinearSolverOptions& options,
+                          const Eigen::SparseMatrix<double>& A) {
+  if (options.method != "auto") return options.method == "iterative";
+  return predicted_factorization_flops(A) > 1e9 * options.direct_max_gflop;
 }
 
 void validate_linear_solver_options(const LinearSolverOptions& o) {
@@ -67,7 +67,8 @@ void validate_linear_solver_options(const LinearSolverOptions& o) {
   };
   require(o.method == "auto" || o.method == "direct" || o.method == "iterative",
           "linear_solver.method", "must be auto, direct or iterative, got '" + o.method + "'");
-  require(o.iterative_from >= 0, "linear_solver.iterative_from", "must be >= 0");
+  require(std::isfinite(o.direct_max_gflop) && o.direct_max_gflop >= 0,
+          "linear_solver.direct_max_gflop", "must be a finite number >= 0");
   require(std::isfinite(o.cg_tolerance) && o.cg_tolerance > 0 && o.cg_tolerance < 1,
           "linear_solver.cg_tolerance", "must be a number in (0, 1)");
   require(std::isfinite(o.cg_forcing) && o.cg_forcing >= 0 && o.cg_forcing < 1,
@@ -83,10 +84,12 @@ void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* 
       throw UsageError("the " + term->name() +
                        " term is not quadratic: the local_global method cannot minimise it "
                        "(use method: ceres)");
-  data->iterative = use_iterative_solver(options, problem.num_vertices());
   data->cg = CgOptions{options.cg_tolerance, options.cg_forcing, options.cg_max_iterations};
   assemble_quadratic_part(problem, data);
-  if (data->iterative) {
+  data->iterative = use_iterative_solver(options, data->A);
+  if (!data->iterative) {
+    data->ldlt.analyze(data->A);
+  } else {
     if (!amg) {
       auto own = std::make_shared<AmgData>();
       amg_precomputation(data->A_beta, AmgOptions{}, own.get());
@@ -99,6 +102,7 @@ void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* 
 bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
   LocalGlobalData data;
   assemble_quadratic_part(problem, &data);
+  data.ldlt.analyze(data.A);
   local_global_set_beta(beta, &data);
   return energy_bounded(data);
 }

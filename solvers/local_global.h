@@ -29,15 +29,19 @@
 namespace unfold {
 
 struct LinearSolverOptions {
-  std::string method = "auto";   ///< direct (sparse LDL^T), iterative (AMG + CG) or auto
-  int iterative_from = 20000;    ///< auto: iterative from this many vertices on
+  std::string method = "auto";  ///< direct (sparse LDL^T), iterative (AMG + CG) or auto
+  /// auto: direct while one factorization is predicted to cost at most this
+  /// many GFlop (the fill of a volume-filling 3D mesh makes it grow ~n^2)
+  double direct_max_gflop = 0.3;
   double cg_tolerance = 1e-8;    ///< iterative: relative residual of each global step at least
   double cg_forcing = 1e-3;      ///< iterative: or this reduction of the warm start's residual
   int cg_max_iterations = 1000;  ///< iterative: CG iterations per global step at most
 };
 
-/// Whether `options` pick the iterative solver for a problem of n vertices.
-bool use_iterative_solver(const LinearSolverOptions& options, int num_vertices);
+/// Whether `options` pick the iterative solver for the global matrix A (its
+/// pattern): auto compares predicted_factorization_flops(A) with
+/// direct_max_gflop (a symbolic analysis: 0.15 s at 100k vertices).
+bool use_iterative_solver(const LinearSolverOptions& options, const Eigen::SparseMatrix<double>& A);
 
 /// @throws UsageError naming the config key of a bad option
 void validate_linear_solver_options(const LinearSolverOptions& options);

@@ -9,6 +9,32 @@
 #include "core/errors.h"
 
 namespace unfold {
+namespace {
+
+// A's lower triangle as a CHOLMOD matrix of the given xtype (pattern, or real
+// with the values left to fill), or null when CHOLMOD runs out of memory.
+cholmod_sparse* lower_triangle(const Eigen::SparseMatrix<double>& A, int xtype,
+                               cholmod_common* common) {
+  const int n = int(A.rows());
+  size_t nnz = 0;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) nnz += it.row() >= j;
+  cholmod_sparse* L = cholmod_allocate_sparse(size_t(n), size_t(n), nnz, /*sorted=*/1,
+                                              /*packed=*/1, /*stype=*/-1, xtype, common);
+  if (!L) return nullptr;
+  int* p = static_cast<int*>(L->p);
+  int* i = static_cast<int*>(L->i);
+  size_t k = 0;
+  for (int j = 0; j < A.outerSize(); ++j) {
+    p[j] = int(k);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (it.row() >= j) i[k++] = int(it.row());
+  }
+  p[n] = int(k);
+  return L;
+}
+
+}  // namespace
 
 struct SparseLdlt::Impl {
   // Eigen backend.
@@ -67,21 +93,8 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
   }
   cholmod_free_factor(&m.L, &m.common);
   cholmod_free_sparse(&m.A, &m.common);
-  size_t nnz = 0;
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it) nnz += it.row() >= j;
-  m.A = cholmod_allocate_sparse(size_t(m.n), size_t(m.n), nnz, /*sorted=*/1, /*packed=*/1,
-                                /*stype=*/-1, CHOLMOD_REAL, &m.common);
+  m.A = lower_triangle(A, CHOLMOD_REAL, &m.common);
   if (!m.A) throw NumericalError("SparseLdlt: CHOLMOD could not allocate the matrix");
-  int* p = static_cast<int*>(m.A->p);
-  int* i = static_cast<int*>(m.A->i);
-  size_t k = 0;
-  for (int j = 0; j < A.outerSize(); ++j) {
-    p[j] = int(k);
-    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
-      if (it.row() >= j) i[k++] = int(it.row());
-  }
-  p[m.n] = int(k);
   m.copy_lower_values(A);
   m.L = cholmod_analyze(m.A, &m.common);
   if (!m.L || m.common.status < CHOLMOD_OK)
@@ -143,6 +156,26 @@ void SparseLdlt::solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const {
     throw NumericalError("SparseLdlt: CHOLMOD solve failed (status " +
                          std::to_string(m.common.status) + ")");
   *x = Eigen::Map<const Eigen::MatrixX3d>(static_cast<const double*>(m.X->x), m.n, 3);
+}
+
+double predicted_factorization_flops(const Eigen::SparseMatrix<double>& A) {
+  if (A.rows() != A.cols()) throw UsageError("predicted_factorization_flops: matrix is not square");
+  cholmod_common common;
+  cholmod_start(&common);
+  common.nmethods = 1;
+  common.method[0].ordering = CHOLMOD_AMD;
+  common.supernodal = CHOLMOD_SIMPLICIAL;
+  cholmod_sparse* pattern = lower_triangle(A, CHOLMOD_PATTERN, &common);
+  double flops = -1;
+  if (pattern) {
+    cholmod_factor* L = cholmod_analyze(pattern, &common);
+    if (L && common.status >= CHOLMOD_OK) flops = common.fl;
+    cholmod_free_factor(&L, &common);
+    cholmod_free_sparse(&pattern, &common);
+  }
+  cholmod_finish(&common);
+  if (flops < 0) throw NumericalError("predicted_factorization_flops: CHOLMOD's analysis failed");
+  return flops;
 }
 
 }  // namespace unfold

@@ -167,6 +167,30 @@ TEST(FiedlerValue, LobpcgAgreesWithShiftInvertLanczos) {
   EXPECT_NEAR(iterative, direct, 1e-9 * direct);
 }
 
+// The auto choice rests on the predicted cost of a factorization: it grows
+// faster than n on a volume-filling mesh, never undercuts what the solver's
+// own ordering achieves, and moves auto from direct to iterative.
+TEST(LinearSolverChoice, FollowsThePredictedFactorizationCost) {
+  const auto laplacian = [](int k) {
+    const TetMesh mesh = test::grid_tet_mesh(k, k, k);
+    return graph_laplacian(build_edge_graph(int(mesh.V.rows()), mesh.T));
+  };
+  const Eigen::SparseMatrix<double> small = laplacian(8), large = laplacian(16);
+  const double small_flops = predicted_factorization_flops(small);
+  const double large_flops = predicted_factorization_flops(large);
+  EXPECT_GT(large_flops, 20 * small_flops);  // 8x the vertices
+  SparseLdlt ldlt;
+  ldlt.analyze(large);
+  EXPECT_LE(ldlt.factor_flops(), large_flops * (1 + 1e-12));
+  LinearSolverOptions options;
+  options.direct_max_gflop = 2e-9 * large_flops;
+  EXPECT_FALSE(use_iterative_solver(options, large));
+  options.direct_max_gflop = 0.5e-9 * large_flops;
+  EXPECT_TRUE(use_iterative_solver(options, large));
+  options.method = "direct";
+  EXPECT_FALSE(use_iterative_solver(options, large));
+}
+
 // A bar bent into an arc: the cascade has real work to do.
 struct BentBar : test::ProblemFixture {
   explicit BentBar(const EnergyOptions& energy = {}) : ProblemFixture(bent(), energy) {}

@@ -82,6 +82,7 @@ void expect_same_as_reference(const SurfaceMesh& surface) {
   ASSERT_GT(result.iterations, 1);
   const Eigen::MatrixX3d Q = reference_iterations(g, tets.V, result.history);
   const double scale = Q.cwiseAbs().maxCoeff();
+  std::printf("IDENTITY DIFF %.3e\n", (result.positions - Q).cwiseAbs().maxCoeff() / scale);
   EXPECT_LT((result.positions - Q).cwiseAbs().maxCoeff(), 1e-9 * scale)
       << "after " << result.iterations << " iterations on " << g.num_vertices << " vertices";
 }
