@@ -54,15 +54,18 @@ Image plot_scaling(const std::vector<double>& n, const std::vector<ScalingSeries
     tmax = std::max(tmax, *std::max_element(values.begin(), values.end()));
   }
   check(n, peak_mb, "peak memory");
+  // x in thousands of vertices: short tick labels.
+  std::vector<double> k(n.size());
+  for (size_t i = 0; i < n.size(); ++i) k[i] = n[i] / 1000;
   Image image(width, height);
   const int top = 36, bottom = height - 44, middle = width * 3 / 5;
-  const double xmax = n.back() * 1.05;
+  const double xmax = k.back() * 1.05;
   const PlotAxes time =
       draw_plot_axes(64, top, middle - 30, bottom, 0, xmax, 0, std::max(tmax, 1e-3),
                      "seconds (dashed: proportional to n)", true, &image);
   for (size_t s = 0; s < seconds.size(); ++s) {
     const Rgb color = kColors[s % (sizeof kColors / sizeof kColors[0])];
-    draw_series(time, n, seconds[s].second, color, &image);
+    draw_series(time, k, seconds[s].second, color, &image);
     const int y = top + 8 + 14 * int(s);
     fill_rect(time.x0 + 10, y + 2, time.x0 + 24, y + 6, color, &image);
     draw_text(seconds[s].first, time.x0 + 30, y, kInk, 1, &image);
@@ -71,8 +74,8 @@ Image plot_scaling(const std::vector<double>& n, const std::vector<ScalingSeries
       draw_plot_axes(middle + 40, top, width - 20, bottom, 0, xmax, 0,
                      std::max(*std::max_element(peak_mb.begin(), peak_mb.end()), 1.0),
                      "peak memory, MB", true, &image);
-  draw_series(memory, n, peak_mb, {148, 103, 189}, &image);
-  const std::string xlabel = "tet vertices n";
+  draw_series(memory, k, peak_mb, {148, 103, 189}, &image);
+  const std::string xlabel = "tet vertices n (thousands)";
   for (const PlotAxes* a : {&time, &memory})
     draw_text(xlabel, (a->x0 + a->x1 - text_size(xlabel, 1).first) / 2, height - 18, kInk, 1,
               &image);
