@@ -32,6 +32,27 @@ double edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen
   return sum / graph.num_edges();
 }
 
+Eigen::VectorXd edge_lengths(const EdgeGraph& graph, const Eigen::MatrixX3d& P) {
+  check_sizes(graph, P, P);
+  Eigen::VectorXd lengths(graph.num_edges());
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    lengths[e] = (P.row(graph.edges(e, 0)) - P.row(graph.edges(e, 1))).norm();
+    if (lengths[e] == 0) ratio(P, P, graph.edges(e, 0), graph.edges(e, 1));  // throws, naming it
+  }
+  return lengths;
+}
+
+double edge_ratio(const EdgeGraph& graph, const Eigen::VectorXd& rest_lengths,
+                  const Eigen::MatrixX3d& Q) {
+  if (rest_lengths.size() != graph.num_edges() || Q.rows() != graph.num_vertices)
+    throw UsageError("edge_ratio: need one rest length per edge and one row of Q per vertex");
+  if (graph.num_edges() == 0) throw InputError("edge_ratio: the graph has no edges");
+  double sum = 0;
+  for (int e = 0; e < graph.num_edges(); ++e)
+    sum += (Q.row(graph.edges(e, 0)) - Q.row(graph.edges(e, 1))).norm() / rest_lengths[e];
+  return sum / graph.num_edges();
+}
+
 Eigen::VectorXd vertex_edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                   const Eigen::MatrixX3d& Q) {
   check_sizes(graph, P, Q);

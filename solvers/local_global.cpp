@@ -167,7 +167,8 @@ double energy_after_global_step(const LocalGlobalData& data, const Rotations& R,
 
 LocalGlobalBackend::LocalGlobalBackend(const UnfoldProblem& problem,
                                        const LinearSolverOptions& options,
-                                       std::shared_ptr<const AmgData> amg) {
+                                       std::shared_ptr<const AmgData> amg)
+    : rest_lengths_(edge_lengths(*problem.graph, problem.rest)) {
   local_global_precomputation(problem, &data_, options, std::move(amg));
 }
 
@@ -216,7 +217,7 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     } else {
       energy = energy_after_global_step(data_, R_, *Q);
     }
-    const double delta = edge_ratio(*problem.graph, problem.rest, *Q);
+    const double delta = edge_ratio(*problem.graph, rest_lengths_, *Q);
     history->push_back({iteration, cascade, data_.beta, energy, delta});
     VLOG(1) << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
             << " energy " << energy << " edge ratio " << delta;

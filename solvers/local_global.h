@@ -126,6 +126,7 @@ class LocalGlobalBackend : public CascadeBackend {
   LocalGlobalData data_;
   Rotations R_;
   std::vector<Eigen::Matrix3d> covariances_;  ///< the local step's buffer
+  Eigen::VectorXd rest_lengths_;              ///< for the edge ratio of every iteration
 };
 
 }  // namespace unfold

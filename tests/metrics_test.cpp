@@ -265,6 +265,13 @@ TEST(MetricEdgeRatio, EqualsUniformScale) {
   const Eigen::MatrixX3d P = grid_points(3, 4, 5);
   EXPECT_NEAR(edge_ratio(g, P, 1.25 * rigidly_moved(P, rng)), 1.25, 1e-12);
   EXPECT_NEAR(edge_ratio(g, P, P), 1.0, 1e-15);
+  // With the rest lengths computed once, as the solver does.
+  Eigen::MatrixX3d bent = P;
+  bent.col(2) += 0.1 * P.col(0).cwiseProduct(P.col(0));
+  EXPECT_NEAR(edge_ratio(g, edge_lengths(g, P), bent), edge_ratio(g, P, bent), 1e-14);
+  Eigen::MatrixX3d collapsed = P;
+  collapsed.row(1) = collapsed.row(0);  // an edge of zero rest length
+  EXPECT_THROW(edge_lengths(g, collapsed), InputError);
 }
 
 TEST(MetricRigidAlignment, ZeroForRigidCopy) {
