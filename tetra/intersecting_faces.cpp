@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "core/errors.h"
+#include "mesh/position_order.h"
 
 namespace unfold {
 namespace {
@@ -165,14 +165,8 @@ std::vector<std::pair<int, int>> intersecting_face_pairs(const Eigen::MatrixX3d&
   (void)predicates_ready;
 
   // Vertices at equal positions become one (the lowest index).
-  std::vector<int> order(V.rows()), same(V.rows());
-  std::iota(order.begin(), order.end(), 0);
-  const auto less = [&](int a, int b) {
-    for (int k = 0; k < 3; ++k)
-      if (V(a, k) != V(b, k)) return V(a, k) < V(b, k);
-    return a < b;
-  };
-  std::sort(order.begin(), order.end(), less);
+  const std::vector<int> order = position_order(V);
+  std::vector<int> same(V.rows());
   for (size_t k = 0; k < order.size(); ++k)
     same[size_t(order[k])] =
         k > 0 && V.row(order[k]) == V.row(order[k - 1]) ? same[size_t(order[k - 1])] : order[k];

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "mesh/position_order.h"
 #include "tetra/fast_winding_number.h"
 #include "tetra/run_tetgen.h"
 #include "tetra/tetrahedralize.h"
@@ -36,14 +37,7 @@ double mean_edge_length(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
 // from the output. Later copies of a position are moved by a tiny deterministic
 // offset for TetGen only; tets joining two copies are dropped afterwards.
 Eigen::MatrixX3d separate_duplicates(const Eigen::MatrixX3d& V, double offset) {
-  std::vector<int> order(size_t(V.rows()));
-  std::iota(order.begin(), order.end(), 0);
-  const auto less = [&](int a, int b) {
-    for (int k = 0; k < 3; ++k)
-      if (V(a, k) != V(b, k)) return V(a, k) < V(b, k);
-    return a < b;
-  };
-  std::sort(order.begin(), order.end(), less);
+  const std::vector<int> order = position_order(V);
   Eigen::MatrixX3d P = V;
   int copy = 0;
   for (size_t k = 1; k < order.size(); ++k) {
