@@ -75,10 +75,10 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
   problem.rest = result.tets.V;
   problem.terms = make_energy_terms(result.tets, graph, options.energy);
   const int n = graph.num_vertices;
-  // The iterative solver's AMG hierarchy serves lambda_2 and every global step.
+  // The solver is decided once here (it needs a symbolic analysis), for
+  // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
   const Eigen::SparseMatrix<double> L = beta_laplacian(problem);
   std::shared_ptr<AmgData> amg;
-  // Decided once here (it needs a symbolic analysis), for lambda_2 and the backend alike.
   LinearSolverOptions solver = options.linear_solver;
   solver.method = use_iterative_solver(solver, L) ? "iterative" : "direct";
   result.linear_solver = solver.method;
@@ -114,14 +114,14 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
   int iterations_per_cascade = options.cascade.k_iter;
   if (options.method == "ceres" || options.method == "dpmu") {
     result.linear_solver = "ceres";
-    auto backend = std::make_unique<CeresBackend>(problem, options.ceres);
+    CeresBackend backend(problem, options.ceres);
     iterations_per_cascade = options.ceres.max_num_iterations;
-    result.cascade = run_cascade(problem, *backend, cascade, iterations_per_cascade);
+    result.cascade = run_cascade(problem, backend, cascade, iterations_per_cascade);
     return;
   }
-  auto local_global = std::make_unique<LocalGlobalBackend>(problem, solver, amg);
-  result.cascade = run_cascade(problem, *local_global, cascade, iterations_per_cascade);
-  result.cg = local_global->data().cg_stats;
+  LocalGlobalBackend local_global(problem, solver, amg);
+  result.cascade = run_cascade(problem, local_global, cascade, iterations_per_cascade);
+  result.cg = local_global.data().cg_stats;
   if (result.cg.unconverged_solves > 0)
     result.warnings.push_back(
         std::to_string(result.cg.unconverged_solves) + " of " + std::to_string(result.cg.solves) +
