@@ -22,6 +22,9 @@
   X(components, "components", components,                                                       \
     "several connected components: refuse (error naming the count) or separately (each "        \
     "unfolded on its own, put back together in input order)")                                   \
+  X(domain, "domain", domain,                                                                   \
+    "volume: the energy on the tet mesh (the paper's); surface: on the surface's vertices and "  \
+    "triangle edges, the interior following by ARAP (more pose-invariant, docs/method.md)")     \
   X(beta_mode, "beta.mode", beta_mode,                                                          \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                         \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                            \

@@ -184,6 +184,8 @@ void validate_options(const Options& o) {
           "must be 0 (no bound) or a positive finite number");
   require(o.components == "refuse" || o.components == "separately", "components",
           "must be refuse or separately, got '" + o.components + "'");
+  require(o.domain == "volume" || o.domain == "surface", "domain",
+          "must be volume or surface, got '" + o.domain + "'");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

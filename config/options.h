@@ -22,6 +22,7 @@ struct Options {
   TetOptions tet;
   bool fallback_surface_graph = false;  ///< no tet mesh possible: unfold the surface edge graph
   std::string components = "refuse";    ///< several components: "refuse" or "separately"
+  std::string domain = "volume";        ///< "volume" (tet mesh, the paper's) or "surface"
   std::string beta_mode = "relative";
   double beta_value = 1.5;
   bool raise_beta_to_bound = true;    ///< a starting beta below the bound is raised above it

@@ -77,8 +77,9 @@ std::string csv_table(const std::vector<ReportRun>& runs, const std::string& fil
   return header ? md.str() : "(none)\n";
 }
 
-// pose_invariance.csv of the runs pivoted: classes x methods.
-std::string pose_table(const std::vector<ReportRun>& runs) {
+// pose_invariance.csv of the runs pivoted: classes x methods; the mean
+// distance, or (ratios) the mean and largest pair ratio to the raw poses.
+std::string pose_table(const std::vector<ReportRun>& runs, bool ratios) {
   std::vector<std::string> methods;
   std::map<std::string, std::map<std::string, std::string>> cells;  // class -> method -> value
   for (const auto& run : runs) {
@@ -89,11 +90,14 @@ std::string pose_table(const std::vector<ReportRun>& runs) {
       std::vector<std::string> f;
       std::istringstream s(line);
       for (std::string x; std::getline(s, x, ',');) f.push_back(x);
-      if (f.size() != 3) continue;
+      if (f.size() < (ratios ? 5u : 3u)) continue;
       const std::string method = run.label.empty() ? f[1] : f[1] + "@" + run.label;
+      if (ratios && f[1] == "raw") continue;
       if (std::find(methods.begin(), methods.end(), method) == methods.end())
         methods.push_back(method);
-      cells[f[0]][method] = number(std::stod(f[2]));
+      cells[f[0]][method] = ratios ? number(std::stod(f[3]), "%.3f") + " (max " +
+                                         number(std::stod(f[4]), "%.3f") + ")"
+                                   : number(std::stod(f[2]));
     }
   }
   if (cells.empty()) return "(none)\n";
@@ -151,7 +155,9 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
   if (failures == 0) md << "none\n";
   md << "\n### Retrieval: nearest-neighbour accuracy\n\n" << csv_table(runs, "retrieval.csv");
   md << "\n### Pose invariance: mean aligned vertex distance / sqrt(area) between poses\n\n"
-     << pose_table(runs);
+     << pose_table(runs, false);
+  md << "\n### Pose invariance: canonical / raw distance of each pair of poses, mean (largest)\n\n"
+     << pose_table(runs, true);
   md << "\n### Mean seconds per shape (solve and metrics)\n\n| method | seconds |\n|---|---|\n";
   for (const auto& m : methods) {
     double sum = 0;

@@ -19,6 +19,7 @@
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
+#include "solvers/place_interior.h"
 
 namespace unfold {
 namespace {
@@ -67,13 +68,15 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
   return surface_only;
 }
 
-// The paper's method and the energy-term baselines: lambda_2, beta, the cascade.
-void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult* out) {
+// The paper's method and the energy-term baselines: lambda_2, beta, the cascade,
+// on the vertices and edges of `mesh`.
+void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
+                   UnfoldResult* out) {
   UnfoldResult& result = *out;
   UnfoldProblem problem;
   problem.graph = &graph;
-  problem.rest = result.tets.V;
-  problem.terms = make_energy_terms(result.tets, graph, options.energy);
+  problem.rest = mesh.V;
+  problem.terms = make_energy_terms(mesh, graph, options.energy);
   const int n = graph.num_vertices;
   // The solver is decided once here (it needs a symbolic analysis), for
   // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
@@ -127,6 +130,26 @@ void solve_cascade(const EdgeGraph& graph, const Options& options, UnfoldResult*
         std::to_string(result.cg.unconverged_solves) + " of " + std::to_string(result.cg.solves) +
         " global steps stopped at linear_solver.cg_max_iterations (worst relative residual " +
         std::to_string(result.cg.worst_relative_residual) + ")");
+}
+
+// domain: surface. The energy lives on the surface's vertices and triangle
+// edges, whose rest state barely changes with the pose (a bent knee's skin keeps
+// its lengths; its interior tets are bent); the interior then follows by ARAP
+// on the tet edges (docs/method.md, pose invariance).
+void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, UnfoldResult* out) {
+  UnfoldResult& result = *out;
+  TetMesh surface;
+  surface.num_surface_vertices = result.tets.num_surface_vertices;
+  surface.V = result.tets.V.topRows(surface.num_surface_vertices);
+  surface.T.resize(0, 4);
+  const EdgeGraph surface_graph = build_edge_graph(
+      surface.num_surface_vertices, Eigen::MatrixXi(triangulate_faces(result.surface)));
+  check_tet_graph(surface_graph, surface.V);
+  solve_cascade(surface_graph, surface, options, out);
+  Eigen::MatrixX3d Q = result.tets.V.rowwise() - result.tets.V.colwise().mean();
+  Q.topRows(surface.num_surface_vertices) = result.cascade.positions;
+  result.cascade.positions =
+      place_interior(tet_graph, result.tets.V, std::move(Q), surface.num_surface_vertices);
 }
 
 // LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =
@@ -205,8 +228,10 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   result.num_edges = graph.num_edges();
   if (options.method == "lsmds") {
     result.cascade = lsmds_cascade_result(graph, result.tets.V, options.lsmds);
+  } else if (options.domain == "surface" && result.tets.T.rows() > 0) {
+    solve_on_surface(graph, options, &result);
   } else {
-    solve_cascade(graph, options, &result);
+    solve_cascade(graph, result.tets, options, &result);
   }
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)

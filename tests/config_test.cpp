@@ -33,6 +33,21 @@ TEST(Config, ShippedDefaultEqualsBuiltInDefaults) {
   EXPECT_NE(options_to_yaml(shipped).find("edge_ratio_band: [0.95, 1.05]"), std::string::npos);
 }
 
+TEST(Config, PaperConfigIsThePapersMethod) {
+  const Options paper = load_options(UNFOLD_SOURCE_DIR "/configs/paper.yaml");
+  EXPECT_EQ(paper.method, "local_global");
+  EXPECT_EQ(paper.domain, "volume");
+  EXPECT_EQ(paper.energy.arap_weights, "uniform");
+  EXPECT_TRUE(paper.cascade.break_in_band);
+  EXPECT_EQ(paper.cascade.anderson, 0);
+  EXPECT_EQ(paper.cascade.k_iter, 15);
+  EXPECT_EQ(paper.cascade.num_cascades, 4);
+  EXPECT_EQ(paper.cascade.growth, 2.0);
+  EXPECT_EQ(paper.energy.stretch_weight, 1.0);
+  EXPECT_EQ(paper.energy.arap_weight, 1.0);
+  EXPECT_EQ(load_options(UNFOLD_SOURCE_DIR "/configs/surface.yaml").domain, "surface");
+}
+
 TEST(Config, EffectiveYamlRoundTrips) {
   Options o;
   o.cascade.k_iter = 7;

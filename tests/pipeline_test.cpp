@@ -47,6 +47,24 @@ TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
   EXPECT_LT(after, 0.5 * before) << "poses " << before << " apart, canonical forms " << after;
 }
 
+TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {
+  const SurfaceMesh a = make_articulated_shape(ShapePose::preset(0));
+  Options surface;
+  surface.domain = "surface";
+  const UnfoldResult r = unfold_surface(a, surface);
+  ASSERT_GT(r.tets.V.rows(), r.tets.num_surface_vertices) << "the demo shape has interior vertices";
+  EXPECT_EQ(r.canonical.V.rows(), a.V.rows());
+  EXPECT_TRUE(r.tet_canonical.allFinite());
+  EXPECT_TRUE(r.cascade.reached_band);
+  EXPECT_LE(r.cascade.edge_ratio, 1.05);
+  // The interior is where ARAP puts it: not left at its rest place, no tet inverted.
+  const Eigen::MatrixX3d interior = r.tet_canonical.bottomRows(r.tets.V.rows() - a.V.rows());
+  EXPECT_GT(rms_radius(r.canonical.V), 1.05 * rms_radius(a.V));
+  EXPECT_GT(rms_radius(interior), 1.05 * rms_radius(r.tets.V.bottomRows(interior.rows())));
+  EXPECT_EQ(r.metrics.inverted_tets, 0);
+  EXPECT_LT(r.metrics.E_rig, 1.5);
+}
+
 TEST(PipelineInput, RefusesAnOpenSurface) {
   SurfaceMesh open = test::octahedron();
   open.faces.pop_back();

@@ -13,15 +13,17 @@ for f in "$DATA"/tosca/*.off "$DATA"/faust/*.off; do ln -sf "$(realpath "$f")" "
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
   --configs configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml \
   --target_vertices 2000 --jobs 2
-# Ours at full resolution.
+# Ours at full resolution: the paper's method and the surface domain
+# (docs/method.md, pose invariance); pose pictures poses_<class>_<method>.png.
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" \
-  --configs configs/default.yaml --jobs 2
+  --configs configs/paper.yaml,configs/surface.yaml --jobs 2
 
 build/bin/unfold_report --runs "$OUT/2k,$OUT/full" --labels 2k,full \
   --markdown docs/results/report.md --plots_dir docs/results
 cp "$OUT"/2k/results.csv docs/results/results_2k.csv
 cp "$OUT"/full/results.csv docs/results/results_full.csv
 for d in 2k full; do
-  for f in retrieval pose_invariance; do cp "$OUT/$d/$f.csv" "docs/results/${f}_$d.csv"; done
+  for f in retrieval pose_invariance pose_pairs; do cp "$OUT/$d/$f.csv" "docs/results/${f}_$d.csv"; done
   for f in "$OUT"/$d/similarity_*.csv; do cp "$f" "docs/results/${d}_$(basename "$f")"; done
 done
+for f in "$OUT"/full/poses_*.png; do cp "$f" docs/results/; done

@@ -1,0 +1,57 @@
+#include "solvers/place_interior.h"
+
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <vector>
+
+#include "core/errors.h"
+#include "solvers/best_rotations.h"
+
+namespace unfold {
+
+Eigen::MatrixX3d place_interior(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                Eigen::MatrixX3d Q, int num_fixed, int max_iterations,
+                                double tolerance) {
+  const int n = graph.num_vertices, m = n - num_fixed;
+  if (P.rows() != n || Q.rows() != n || num_fixed < 1 || num_fixed > n)
+    throw UsageError("place_interior: need P and Q with one row per graph vertex and 1 to n fixed");
+  if (m == 0) return Q;
+  // Free block of the graph Laplacian, and the edges from free to fixed vertices.
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int i = num_fixed; i < n; ++i) {
+    triplets.emplace_back(i - num_fixed, i - num_fixed, double(graph.degree(i)));
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+      if (graph.neighbors[size_t(k)] >= num_fixed)
+        triplets.emplace_back(i - num_fixed, graph.neighbors[size_t(k)] - num_fixed, -1.0);
+  }
+  Eigen::SparseMatrix<double> L(m, m);
+  L.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L);
+  if (ldlt.info() != Eigen::Success)
+    throw NumericalError(
+        "interior placement: some interior vertex is not connected to the surface");
+  const double radius =
+      std::sqrt((Q.rowwise() - Q.colwise().mean()).rowwise().squaredNorm().mean());
+  Rotations R;
+  Eigen::MatrixX3d rhs(m, 3);
+  for (int it = 0; it < max_iterations; ++it) {
+    best_rotations(graph, P, Q, &R);
+    // d/dq_i of sum over edges |q_i - q_j - (R_i + R_j)/2 (p_i - p_j)|^2 = 0.
+    for (int i = num_fixed; i < n; ++i) {
+      Eigen::RowVector3d b = Eigen::RowVector3d::Zero();
+      for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
+        const int j = graph.neighbors[size_t(k)];
+        b += (0.5 * (R[size_t(i)] + R[size_t(j)]) * (P.row(i) - P.row(j)).transpose()).transpose();
+        if (j < num_fixed) b += Q.row(j);
+      }
+      rhs.row(i - num_fixed) = b;
+    }
+    const Eigen::MatrixX3d free = ldlt.solve(rhs);
+    const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();
+    Q.bottomRows(m) = free;
+    if (step <= tolerance * radius) break;
+  }
+  return Q;
+}
+
+}  // namespace unfold

@@ -1,0 +1,92 @@
+// The interior following the surface (domain: surface): rigid motions are
+// followed exactly, other deformations lower the ARAP energy, fixed rows stay.
+#include "solvers/place_interior.h"
+
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "mesh/edge_graph.h"
+#include "solvers/best_rotations.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+// A 4 x 4 x 4 grid of tets with its boundary vertices first, as in a TetMesh.
+struct BoundaryFirstGrid {
+  TetMesh mesh;
+  int num_boundary = 0;
+  BoundaryFirstGrid() {
+    const TetMesh grid = test::grid_tet_mesh(4, 4, 4);
+    const int n = int(grid.V.rows());
+    std::vector<int> order;
+    std::vector<int> position(static_cast<size_t>(n));
+    for (const bool boundary : {true, false})
+      for (int i = 0; i < n; ++i) {
+        const Eigen::RowVector3d p = grid.V.row(i);
+        if (((p.array() == 0) || (p.array() == 4)).any() == boundary) order.push_back(i);
+      }
+    mesh.V.resize(n, 3);
+    for (int k = 0; k < n; ++k) {
+      mesh.V.row(k) = grid.V.row(order[size_t(k)]);
+      position[size_t(order[size_t(k)])] = k;
+    }
+    mesh.T = grid.T.unaryExpr([&](int i) { return position[size_t(i)]; });
+    num_boundary = n - 27;  // the 3 x 3 x 3 inner vertices come last
+  }
+};
+
+double arap_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q) {
+  Rotations R;
+  best_rotations(graph, P, Q, &R);
+  double e = 0;
+  for (int i = 0; i < graph.num_vertices; ++i)
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
+      const int j = graph.neighbors[size_t(k)];
+      e += (Q.row(i) - Q.row(j) - (R[size_t(i)] * (P.row(i) - P.row(j)).transpose()).transpose())
+               .squaredNorm();
+    }
+  return e;
+}
+
+TEST(PlaceInterior, FollowsARigidMotionOfTheSurface) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  const Eigen::Matrix3d R = test::random_rotation(7);
+  const Eigen::RowVector3d t(1.0, -2.0, 0.5);
+  const Eigen::MatrixX3d moved = (g.mesh.V * R.transpose()).rowwise() + t;
+  Eigen::MatrixX3d start = moved;
+  start.bottomRows(27) = g.mesh.V.bottomRows(27);  // interior left behind, unrotated
+  const Eigen::MatrixX3d Q = place_interior(graph, g.mesh.V, start, g.num_boundary);
+  EXPECT_LT((Q - moved).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST(PlaceInterior, LowersTheArapEnergyAndKeepsTheFixedRows) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  // A twist about the z axis, growing with height.
+  Eigen::MatrixX3d twisted = g.mesh.V;
+  for (int i = 0; i < twisted.rows(); ++i) {
+    const double a = 0.15 * g.mesh.V(i, 2), x = g.mesh.V(i, 0) - 2, y = g.mesh.V(i, 1) - 2;
+    twisted(i, 0) = std::cos(a) * x - std::sin(a) * y;
+    twisted(i, 1) = std::sin(a) * x + std::cos(a) * y;
+  }
+  Eigen::MatrixX3d start = twisted;
+  start.bottomRows(27) = g.mesh.V.bottomRows(27);
+  const Eigen::MatrixX3d Q = place_interior(graph, g.mesh.V, start, g.num_boundary);
+  EXPECT_EQ(Q.topRows(g.num_boundary), twisted.topRows(g.num_boundary));
+  EXPECT_LT(arap_energy(graph, g.mesh.V, Q), 0.5 * arap_energy(graph, g.mesh.V, start));
+  // The twist itself is nearly as rigid as the surface allows: placement stays close to it.
+  EXPECT_LT((Q - twisted).rowwise().norm().maxCoeff(), 0.1);
+}
+
+TEST(PlaceInterior, RefusesMismatchedSizesAndNothingFixed) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  EXPECT_THROW(place_interior(graph, g.mesh.V, g.mesh.V, 0), UsageError);
+  EXPECT_THROW(place_interior(graph, g.mesh.V, g.mesh.V.topRows(10), 5), UsageError);
+  EXPECT_EQ(place_interior(graph, g.mesh.V, g.mesh.V, int(g.mesh.V.rows())), g.mesh.V);
+}
+
+}  // namespace
+}  // namespace unfold
