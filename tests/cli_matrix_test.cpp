@@ -148,9 +148,10 @@ std::string describe(const test::DesignRow& row) {
     << (row[kSeparately] ? " separately" : "") << (row[kFallback] ? " fallback" : "")
     << (row[kSimplify] ? " target_vertices" : "")
     << (row[kPicture] ? std::string(" render:") + kPictures[row[kPicture]] : "")
-    << kTetFormats[row[kTetOutput]] << (row[kConvergence] ? " csv" : "")
-    << (row[kConvergencePng] ? " convergence_png" : "") << (row[kMetricsJson] ? " json" : "") << " "
-    << kFormats[row[kFormat]] << (row[kInputCopy] ? " input_copy" : "");
+    << (row[kTetOutput] ? std::string(" tets") + kTetFormats[row[kTetOutput]] : "")
+    << (row[kConvergence] ? " csv" : "") << (row[kConvergencePng] ? " convergence_png" : "")
+    << (row[kMetricsJson] ? " json" : "") << " " << kFormats[row[kFormat]]
+    << (row[kInputCopy] ? " input_copy" : "");
   return s.str();
 }
 
