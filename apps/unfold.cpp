@@ -11,6 +11,7 @@
 #include "config/config_keys.h"
 #include "config/options.h"
 #include "core/atomic_file.h"
+#include "core/output_transaction.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
@@ -99,6 +100,7 @@ int run() {
   }
   const unfold::UnfoldResult result = unfold::unfold_surface(surface, options);
 
+  unfold::OutputTransaction outputs;  // all files or none (docs/errors.md)
   if (!FLAGS_output.empty()) unfold::write_surface_mesh(FLAGS_output, result.canonical);
   if (!FLAGS_input_copy.empty()) unfold::write_surface_mesh(FLAGS_input_copy, result.surface);
   if (!FLAGS_tet_output.empty())
@@ -118,6 +120,7 @@ int run() {
   else if (!FLAGS_render.empty())
     unfold::write_png(FLAGS_render, unfold::render_before_after(result, render,
                                                                 FLAGS_render_color == "rigidity"));
+  outputs.commit();
 
   const auto& m = result.metrics;
   std::printf(

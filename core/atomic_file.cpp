@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "core/errors.h"
+#include "core/output_transaction.h"
 
 namespace unfold {
 namespace {
@@ -52,6 +53,8 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     write(out);
     out.close();
     if (out.fail()) throw OutputError("cannot write '" + path + "': stream error (disk full?)");
+    if (OutputTransaction* transaction = OutputTransaction::current())
+      return transaction->stage(temp, path);
     if (std::rename(temp.c_str(), path.c_str()) != 0)
       throw OutputError("cannot write '" + path + "': rename failed: " + system_reason());
   } catch (const Error&) {

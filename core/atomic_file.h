@@ -9,7 +9,8 @@
 namespace unfold {
 
 /// Writes a file through a temporary file in the same directory that is renamed
-/// over `path` only once `write` has finished and the stream is flushed.
+/// over `path` only once `write` has finished and the stream is flushed; while
+/// an OutputTransaction is open, only when that transaction commits.
 /// @param path   destination; its directory must exist and be writable.
 /// @param write  fills the stream; may throw.
 /// @param binary open the stream in binary mode.

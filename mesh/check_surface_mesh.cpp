@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <iomanip>
 #include <numeric>
+#include <sstream>
 
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
@@ -22,6 +24,25 @@ std::string edge_name(int a, int b) {
 
 std::string describe(double x) { return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf"; }
 
+// Squared lengths, areas, volumes and the solver's products of them overflow
+// or underflow far outside 1e-30..1e30 (measured on a sphere: wrong E_geo at
+// 1e100, TetGen aborting at 1e150, face areas inf at 1e200 and 0 at 1e-100).
+void check_size(const Eigen::MatrixX3d& V) {
+  const Eigen::RowVector3d extent = V.colwise().maxCoeff() - V.colwise().minCoeff();
+  const double size = extent.stableNorm();  // stable: no overflow in the squares
+  std::ostringstream shown;
+  if (std::isfinite(size))
+    shown << std::setprecision(3) << size;
+  else
+    shown << "more than 1.8e308";
+  if (!(size <= 1e30))
+    throw InputError("coordinates too large to process: the bounding box diagonal is " +
+                     shown.str() + ", unfold handles 1e-30 to 1e30 (scale the mesh down)");
+  if (size > 0 && size < 1e-30)
+    throw InputError("coordinates too small to process: the bounding box diagonal is " +
+                     shown.str() + ", unfold handles 1e-30 to 1e30 (scale the mesh up)");
+}
+
 void check_vertices_and_faces(const SurfaceMesh& mesh) {
   const Eigen::Index nv = mesh.V.rows();
   if (nv == 0 || mesh.faces.empty())
@@ -32,6 +53,7 @@ void check_vertices_and_faces(const SurfaceMesh& mesh) {
       if (!std::isfinite(mesh.V(i, c)))
         throw InputError("vertex " + std::to_string(i) + " has a non-finite coordinate (" +
                          describe(mesh.V(i, c)) + ")");
+  check_size(mesh.V);
   // One pass per kind of defect, so the reported defect does not depend on
   // which face happens to come first.
   for (size_t f = 0; f < mesh.faces.size(); ++f)

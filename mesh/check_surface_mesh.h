@@ -21,7 +21,8 @@ struct SurfaceReport {
 
 /// Checks a mesh, in this order, and throws InputError (one line, naming the
 /// vertex or face) at the first fatal defect: empty mesh; non-finite
-/// coordinate; face with fewer than 3 vertices; face index out of range; face
+/// coordinate; bounding-box diagonal above 1e30 or below 1e-30 (coordinates
+/// too large or too small to process); face with fewer than 3 vertices; face index out of range; face
 /// repeating a vertex; zero-area face (below 1e-12 x squared bounding-box
 /// diagonal); vertex used by no face; more than one connected component
 /// (only when `require_one_component`; otherwise they are counted).

@@ -19,6 +19,7 @@
 #include "config/options.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/output_transaction.h"
 #include "mesh/mesh_format.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
@@ -144,6 +145,7 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
       }
       const auto start = std::chrono::steady_clock::now();
       const UnfoldResult r = unfold_prepared(prepared[key], options[k]);
+      OutputTransaction outputs;  // a config's files all or none; its row in any case
       row.seconds = seconds_since(start);
       row.E_rig = r.metrics.E_rig, row.E_str = r.metrics.E_str, row.E_geo = r.metrics.E_geo;
       write_surface_mesh(out.file(methods[k], shape, ".off"), r.canonical);
@@ -152,6 +154,7 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
             out.file(methods[k], shape, ".on_input.off"),
             {transfer_by_nearest_point(r.surface.V, r.canonical.V, input.V), input.faces});
       write_metrics_json(out.file(methods[k], shape, ".json"), r, options[k]);
+      outputs.commit();
     } catch (const std::exception& e) {
       row.status = e.what();
       LOG(ERROR) << shape << ", " << methods[k] << ": " << e.what();

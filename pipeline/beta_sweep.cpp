@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "mesh/edge_graph.h"
 
 namespace unfold {
 
@@ -32,6 +33,13 @@ std::vector<double> parse_beta_list(const std::string& text) {
 std::vector<UnfoldResult> unfold_beta_sweep(const UnfoldResult& base, const Options& options,
                                             const std::vector<double>& betas) {
   if (betas.empty()) throw UsageError("beta sweep: empty list of betas");
+  // Components unfolded separately share no beta scale (n / lambda_2 is per
+  // component) and their merged tet mesh is no single problem to solve.
+  const int components = connected_components(build_edge_graph(
+      int(base.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(base.surface))));
+  if (components > 1)
+    throw UsageError("beta sweep: the surface has " + std::to_string(components) +
+                     " connected components (components: separately); a sweep needs one");
   PreparedMesh prepared;
   prepared.surface = base.surface;
   prepared.tets = base.tets;

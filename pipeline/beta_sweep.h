@@ -18,7 +18,8 @@ std::vector<double> parse_beta_list(const std::string& text);
 /// (beta.mode = relative whatever options say); everything else as in options.
 /// @param base   a result of unfold_surface (its surface and tets are reused)
 /// @param betas  positive factors of n / lambda_2
-/// @throws as unfold_prepared; UsageError for an empty list or a factor <= 0
+/// @throws as unfold_prepared; UsageError for an empty list, a factor <= 0 or
+///         a surface of several connected components
 std::vector<UnfoldResult> unfold_beta_sweep(const UnfoldResult& base, const Options& options,
                                             const std::vector<double>& betas);
 

@@ -21,48 +21,43 @@ UnfoldResult unfold_part(const SurfaceMesh& part, const Options& options, int nu
   }
 }
 
-// Copies row i of `from` to row map[i] of `to`.
-void scatter_rows(const Eigen::MatrixX3d& from, const std::vector<int>& map, Eigen::MatrixX3d* to) {
+// Copies row i of `from` to row map[i] of `to`: every per-vertex field of a
+// part goes into the merged one through this.
+template <typename Field>
+void scatter_rows(const Field& from, const std::vector<int>& map, Field* to) {
   for (Eigen::Index i = 0; i < from.rows(); ++i) to->row(map[size_t(i)]) = from.row(i);
 }
 
-}  // namespace
+// Where each part's tet vertices go in the merged tet mesh: surface vertices
+// first (input order, or the parts one after the other when simplified), then
+// every part's interior vertices.
+std::vector<std::vector<int>> merged_vertex_maps(const std::vector<SurfaceComponent>& components,
+                                                 const std::vector<UnfoldResult>& parts,
+                                                 bool simplified) {
+  int interior = 0;
+  for (const auto& r : parts) interior += r.tets.num_surface_vertices;
+  std::vector<std::vector<int>> maps(parts.size());
+  for (size_t c = 0, surface = 0; c < parts.size(); ++c) {
+    const TetMesh& tets = parts[c].tets;
+    for (int v = 0; v < int(tets.V.rows()); ++v)
+      maps[c].push_back(v >= tets.num_surface_vertices ? interior++
+                        : simplified                   ? int(surface) + v
+                                                       : components[c].vertices[size_t(v)]);
+    surface += size_t(tets.num_surface_vertices);
+  }
+  return maps;
+}
 
-UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Options& options) {
-  const std::vector<SurfaceComponent> components = split_surface_components(surface);
-  LOG(INFO) << "unfolding " << components.size() << " connected components separately";
-  Options part_options = options;
-  part_options.components = "refuse";
-  std::vector<UnfoldResult> parts;
-  for (size_t c = 0; c < components.size(); ++c)
-    parts.push_back(unfold_part(components[c].mesh, part_options, int(c) + 1));
-
-  const bool simplified = [&] {
-    for (size_t c = 0; c < parts.size(); ++c)
-      if (parts[c].surface.V.rows() != components[c].mesh.V.rows()) return true;
-    return false;
-  }();
-
-  // Where each part's surface and tet vertices go in the merged meshes:
-  // surface vertices first (input order, or the parts one after the other
-  // when simplified), then every part's interior vertices.
+// The parts as one result: per-vertex fields concatenated through `maps`,
+// counts and times summed, figures combined as documented in the header.
+UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
+                           const std::vector<std::vector<int>>& maps) {
   Eigen::Index num_surface = 0, num_tet_vertices = 0, num_tets = 0;
   for (const auto& r : parts) {
-    num_surface += r.surface.V.rows();
+    num_surface += r.tets.num_surface_vertices;
     num_tet_vertices += r.tets.V.rows();
     num_tets += r.tets.T.rows();
   }
-  std::vector<std::vector<int>> tet_map(parts.size());
-  for (size_t c = 0, surface_offset = 0, interior_offset = size_t(num_surface); c < parts.size();
-       ++c) {
-    const TetMesh& tets = parts[c].tets;
-    for (int v = 0; v < int(tets.V.rows()); ++v)
-      tet_map[c].push_back(v >= tets.num_surface_vertices ? int(interior_offset++)
-                           : simplified                   ? int(surface_offset + size_t(v))
-                                                          : components[c].vertices[size_t(v)]);
-    surface_offset += size_t(tets.num_surface_vertices);
-  }
-
   UnfoldResult merged;
   merged.surface.V.resize(num_surface, 3);
   merged.canonical.V.resize(num_surface, 3);
@@ -79,26 +74,28 @@ UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Opti
   CascadeResult& cascade = merged.cascade;
   cascade.reached_band = true;
   UnfoldMetrics& m = merged.metrics;
-  double edge_ratio_sum = 0, rig_sum = 0, str_sum = 0, geo_sum = 0;
+  m.rigidity_per_vertex.resize(num_tet_vertices);
+  double edge_ratio_sum = 0, str_sum = 0, geo_sum = 0;
   Eigen::Index tet_row = 0;
   for (size_t c = 0; c < parts.size(); ++c) {
     const UnfoldResult& r = parts[c];
-    const std::vector<int>& map = tet_map[c];
+    const std::vector<int>& map = maps[c];
     const std::vector<int> surface_map(map.begin(), map.begin() + r.tets.num_surface_vertices);
     scatter_rows(r.surface.V, surface_map, &merged.surface.V);
     scatter_rows(r.canonical.V, surface_map, &merged.canonical.V);
     scatter_rows(r.tets.V, map, &merged.tets.V);
     scatter_rows(r.tet_canonical, map, &merged.tet_canonical);
+    scatter_rows(r.metrics.rigidity_per_vertex, map, &m.rigidity_per_vertex);
     for (Eigen::Index t = 0; t < r.tets.T.rows(); ++t, ++tet_row)
       for (int k = 0; k < 4; ++k) merged.tets.T(tet_row, k) = map[size_t(r.tets.T(t, k))];
-    if (simplified)
-      for (auto face : r.surface.faces) {
-        for (int& v : face) v = surface_map[size_t(v)];
-        merged.surface.faces.push_back(face);
-      }
+    for (auto face : r.surface.faces) {
+      for (int& v : face) v = surface_map[size_t(v)];
+      merged.surface.faces.push_back(face);
+    }
     if (r.tet_report.route != merged.tet_report.route) merged.tet_report.route = "mixed";
     merged.tet_report.num_tets += r.tet_report.num_tets;
     merged.tet_report.num_interior_points += r.tet_report.num_interior_points;
+    merged.tet_report.num_intersecting_faces += r.tet_report.num_intersecting_faces;
     merged.tet_report.seconds += r.tet_report.seconds;
     merged.num_edges += r.num_edges;
     merged.lambda2 = std::min(merged.lambda2, r.lambda2);
@@ -127,20 +124,38 @@ UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Opti
     cascade.reached_band = cascade.reached_band && r.cascade.reached_band;
     cascade.bounded = cascade.bounded && r.cascade.bounded;
     edge_ratio_sum += r.cascade.edge_ratio * r.num_edges;
-    rig_sum += r.metrics.E_rig * r.num_edges;
     str_sum += r.metrics.E_str * double(r.tets.V.rows());
     geo_sum += r.metrics.E_geo * double(r.tets.V.rows());
     m.E_str_exact = m.E_str_exact && r.metrics.E_str_exact;
     m.E_geo_exact = m.E_geo_exact && r.metrics.E_geo_exact;
+    m.inverted_tets += r.metrics.inverted_tets;
     m.seconds += r.metrics.seconds;
   }
-  if (!simplified) merged.surface.faces = surface.faces;
   merged.canonical.faces = merged.surface.faces;
   cascade.edge_ratio = edge_ratio_sum / merged.num_edges;
   cascade.positions = merged.tet_canonical.rowwise() - merged.tet_canonical.colwise().mean();
-  m.E_rig = rig_sum / merged.num_edges;
+  m.E_rig = m.rigidity_per_vertex.mean();  // E_rig is a mean over tet vertices (Eq. 8)
   m.E_str = str_sum / double(num_tet_vertices);
   m.E_geo = geo_sum / double(num_tet_vertices);
+  return merged;
+}
+
+}  // namespace
+
+UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Options& options) {
+  const std::vector<SurfaceComponent> components = split_surface_components(surface);
+  LOG(INFO) << "unfolding " << components.size() << " connected components separately";
+  Options part_options = options;
+  part_options.components = "refuse";
+  std::vector<UnfoldResult> parts;
+  for (size_t c = 0; c < components.size(); ++c)
+    parts.push_back(unfold_part(components[c].mesh, part_options, int(c) + 1));
+  bool simplified = false;
+  for (size_t c = 0; c < parts.size(); ++c)
+    simplified = simplified || parts[c].surface.V.rows() != components[c].mesh.V.rows();
+  UnfoldResult merged = merge_results(parts, merged_vertex_maps(components, parts, simplified));
+  // Unsimplified, the merged surface is the input itself, faces in input order.
+  if (!simplified) merged.surface.faces = merged.canonical.faces = surface.faces;
   return merged;
 }
 

@@ -43,10 +43,14 @@ void draw_cascade_boundaries(const Axes& a, const std::vector<IterationRecord>& 
 
 Image plot_convergence(const std::vector<IterationRecord>& history,
                        const std::array<double, 2>& band, int width, int height) {
-  if (history.empty()) throw UsageError("plot_convergence: empty iteration history");
   if (width < 200 || height < 200)
     throw UsageError("plot_convergence: the plot needs at least 200 x 200 pixels");
   Image image(width, height);
+  if (history.empty()) {  // e.g. Ceres starting at its minimum: a picture saying so
+    draw_text("convergence: no iterations (the start already met the stopping rule)", 78, 8, kInk,
+              1, &image);
+    return image;
+  }
   const double xmin = std::min(0, history.front().iteration - 1);
   const double xmax = history.back().iteration + 1;  // room right of the last point
   const int left = 78, right = width - 20, gap = 46;

@@ -9,7 +9,9 @@
 
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
+#include "output_checks.h"
 #include "run_app.h"
+#include "test_files.h"
 #include "test_meshes.h"
 
 namespace unfold {
@@ -82,6 +84,36 @@ TEST(Cli, SameInputConfigAndThreadsGiveBitIdenticalOutputs) {
     return out;
   };
   EXPECT_EQ(without_timings(file_bytes(outputs[0][2])), without_timings(file_bytes(outputs[1][2])));
+}
+
+// Issue 13: per-vertex fields of separately unfolded components were empty
+// (a segmentation fault in the rigidity picture, exit 2 writing the tet mesh).
+TEST(Cli, SeparateComponentsRenderByRigidityAndWriteTheTetFields) {
+  const test::TempDir dir;
+  const std::string two = UNFOLD_SOURCE_DIR "/tests/bad_inputs/two_components.off";
+  const AppRun r = run_unfold("--input " + two + " --components separately --output " +
+                              dir.file("x.off") + " --render " + dir.file("x.png") +
+                              " --render_color rigidity --tet_output " + dir.file("x.vtu"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(test::IsSurface(dir.file("x.off"), 8));
+  EXPECT_TRUE(test::IsPng(dir.file("x.png")));
+  EXPECT_TRUE(test::IsVtu(dir.file("x.vtu")));
+}
+
+// Every output of a run is committed together: an error raised after some
+// were written (here the sweep, which comes last) leaves none of them.
+TEST(Cli, AFailureAfterSomeOutputsWereWrittenLeavesNone) {
+  const test::TempDir dir;
+  const std::string two = UNFOLD_SOURCE_DIR "/tests/bad_inputs/two_components.off";
+  const AppRun r = run_unfold(
+      "--input " + two + " --components separately --output " + dir.file("x.off") +
+      " --tet_output " + dir.file("x.node") + " --metrics_json " + dir.file("x.json") +
+      " --convergence " + dir.file("x.csv") + " --beta_sweep 1,2 --render " + dir.file("x.png"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("unfold: error: beta sweep: the surface has 2 connected components"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(dir.count(), 0);
 }
 
 }  // namespace

@@ -35,6 +35,23 @@ TEST(MeshCheckTest, EmptyMeshThrows) {
   EXPECT_TRUE(Contains(check_error(no_faces), "empty (4 vertices, 0 faces)"));
 }
 
+TEST(MeshCheckTest, SizesFrom1eMinus30To1e30PassAndBeyondAreNamed) {
+  // The octahedron's bounding-box diagonal is 2 sqrt(3).
+  const SurfaceMesh unit = test::octahedron();
+  for (double scale : {1.1e-30 / 3.4641, 0.9e30 / 3.4641}) {
+    SurfaceMesh scaled = unit;
+    scaled.V *= scale;
+    EXPECT_NO_THROW(check_surface_mesh(scaled)) << scale;
+  }
+  SurfaceMesh huge = unit, tiny = unit, overflowing = unit;
+  huge.V *= 1e31;
+  tiny.V *= 1e-31;
+  overflowing.V *= 1e308;  // max - min overflows to inf
+  EXPECT_TRUE(Contains(check_error(huge), "coordinates too large to process"));
+  EXPECT_TRUE(Contains(check_error(tiny), "coordinates too small to process"));
+  EXPECT_TRUE(Contains(check_error(overflowing), "diagonal is more than 1.8e308"));
+}
+
 TEST(MeshCheckTest, NonFiniteCoordinateNamesVertex) {
   SurfaceMesh mesh = test::octahedron();
   mesh.V(4, 1) = std::numeric_limits<double>::quiet_NaN();

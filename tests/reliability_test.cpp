@@ -145,6 +145,33 @@ TEST(Components, UnfoldedSeparatelyAndPutBackInInputOrder) {
   EXPECT_EQ(connected_components(build_edge_graph(int(r.tets.V.rows()), r.tets.T)), 2);
 }
 
+TEST(Components, MergedPerVertexFieldsAndERigAreOverAllTetVertices) {
+  // Parts of different vertex-to-edge ratios, so a mean weighted by edges
+  // differs from one weighted by vertices.
+  const SurfaceMesh a = test::uv_sphere(8, 12), b = test::octahedron();
+  Options options = quick_options();
+  options.components = "separately";
+  const UnfoldResult r = unfold_surface(disjoint_union(a, b, 5.0), options);
+  SurfaceMesh b_shifted = b;
+  b_shifted.V.array() += 5.0;
+  const UnfoldResult ra = unfold_surface(a, options), rb = unfold_surface(b_shifted, options);
+  const Eigen::VectorXd& rig = r.metrics.rigidity_per_vertex;
+  ASSERT_EQ(rig.size(), r.tets.V.rows());
+  // Surface vertices in input order, then each part's interior vertices.
+  const Eigen::Index na = a.V.rows(), nb = b.V.rows();
+  EXPECT_EQ(rig.head(na), ra.metrics.rigidity_per_vertex.head(na));
+  EXPECT_EQ(rig.segment(na, nb), rb.metrics.rigidity_per_vertex.head(nb));
+  const Eigen::Index interior_a = ra.tets.V.rows() - na;
+  EXPECT_EQ(rig.segment(na + nb, interior_a), ra.metrics.rigidity_per_vertex.tail(interior_a));
+  const double va = double(ra.tets.V.rows()), vb = double(rb.tets.V.rows());
+  EXPECT_NEAR(r.metrics.E_rig, rig.mean(), 1e-12);
+  EXPECT_NEAR(r.metrics.E_rig, (ra.metrics.E_rig * va + rb.metrics.E_rig * vb) / (va + vb), 1e-12);
+  const double by_edges = (ra.metrics.E_rig * ra.num_edges + rb.metrics.E_rig * rb.num_edges) /
+                          (ra.num_edges + rb.num_edges);
+  EXPECT_GT(std::abs(r.metrics.E_rig - by_edges), 1e-6);  // the old weighting would differ
+  EXPECT_EQ(r.metrics.inverted_tets, ra.metrics.inverted_tets + rb.metrics.inverted_tets);
+}
+
 TEST(Components, SimplifiedComponentsFollowOneAnother) {
   const SurfaceMesh two = disjoint_union(test::uv_sphere(12, 24), test::uv_sphere(10, 20), 4.0);
   Options options = quick_options();

@@ -233,7 +233,12 @@ TEST(PlotConvergence, DrawsBothSeries) {
   EXPECT_EQ(image.width, 400);
   EXPECT_GT(count_pixels(image, {31, 119, 180}), 50);  // energy line
   EXPECT_GT(count_pixels(image, {214, 39, 40}), 50);   // edge-ratio line
-  EXPECT_THROW(plot_convergence({}, {0.95, 1.05}), UsageError);
+  // No iteration (Ceres starting at its minimum): the title only, no series.
+  const Image empty = plot_convergence({}, {0.95, 1.05}, 400, 300);
+  EXPECT_EQ(empty.width, 400);
+  EXPECT_EQ(count_pixels(empty, {31, 119, 180}), 0);
+  EXPECT_GT(count_pixels(empty, {40, 40, 40}), 100);  // the title's ink
+  EXPECT_THROW(plot_convergence(history, {0.95, 1.05}, 100, 100), UsageError);
 }
 
 TEST(PlotScaling, DrawsTimeAndMemoryPanels) {

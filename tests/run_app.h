@@ -1,5 +1,5 @@
-// Runs the unfold command line as a subprocess for the CLI and bad-input
-// tests: exit code, stderr, and the check that a failed run wrote nothing.
+// Runs the command-line apps as subprocesses for the CLI, bad-input and
+// option-matrix tests: exit code, stderr, and the check that a failed run wrote nothing.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -19,19 +19,25 @@ struct AppRun {
   std::string err;  ///< everything it wrote to stderr
 };
 
-/// Runs `build/bin/unfold <args>` (args are passed through the shell).
-inline AppRun run_unfold(const std::string& args) {
+/// Runs `build/bin/<app> <args>` (args are passed through the shell); a
+/// death by a signal, even reported by the shell as 128 + signal, gives -1.
+inline AppRun run_app(const std::string& app, const std::string& args) {
   // One stderr file per process: ctest runs tests in parallel processes.
   const std::string err_path =
-      ::testing::TempDir() + "unfold_stderr_" + std::to_string(getpid()) + ".txt";
+      ::testing::TempDir() + app + "_stderr_" + std::to_string(getpid()) + ".txt";
   const int status = std::system(
-      (std::string(UNFOLD_BIN_DIR) + "/unfold " + args + " 2>" + err_path + " >/dev/null").c_str());
+      (std::string(UNFOLD_BIN_DIR) + "/" + app + " " + args + " 2>" + err_path + " >/dev/null")
+          .c_str());
   std::ifstream in(err_path);
   std::stringstream err;
   err << in.rdbuf();
   std::remove(err_path.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, err.str()};
+  const bool exited = WIFEXITED(status) && WEXITSTATUS(status) < 128;
+  return {exited ? WEXITSTATUS(status) : -1, err.str()};
 }
+
+/// Runs `build/bin/unfold <args>`.
+inline AppRun run_unfold(const std::string& args) { return run_app("unfold", args); }
 
 inline bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
 

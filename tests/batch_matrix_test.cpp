@@ -1,0 +1,144 @@
+// unfold_batch on every input class with every method: failing shapes are
+// recorded with their error and the run goes on; every ok shape's files parse;
+// a batch interrupted (Ctrl-C) and resumed with --skip_existing writes the
+// same tables as one run straight through.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "matrix_inputs.h"
+#include "output_checks.h"
+#include "pipeline/batch_run.h"
+#include "run_app.h"
+#include "test_files.h"
+
+namespace unfold {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every input class, plus a truncated file, as a batch input directory.
+std::string input_dir(const test::TempDir& dir) {
+  const std::string in = dir.file("in");
+  fs::create_directories(in);
+  for (int k = 0; k < test::kNumInputs; ++k)
+    fs::copy_file(test::matrix_input(k), in + "/" + test::input_name(k) +
+                                             fs::path(test::matrix_input(k)).extension().string());
+  test::write_bytes(in + "/broken.off", "OFF\n4 4 0\n0 0 0\n");
+  return in;
+}
+
+std::string configs(const std::vector<int>& which) {
+  std::string list;
+  for (int c : which)
+    list += (list.empty() ? "" : ",") + test::quick_config(test::kMatrixConfigs[c]);
+  return list;
+}
+
+// The error each failing shape is recorded with ("" = ok).
+std::string expected_error(const std::string& shape) {
+  if (shape == "two_components") return "2 connected components";
+  if (shape == "open_surface") return "the surface is open";
+  if (shape == "broken") return "broken.off";
+  return "";
+}
+
+TEST(BatchMatrix, EveryShapeAndMethodIsRecordedAndFailuresDoNotStopTheRun) {
+  const test::TempDir dir;
+  const std::string in = input_dir(dir), out = dir.file("out");
+  for (const char* jobs : {"2", "1 --target_vertices 50"}) {
+    fs::remove_all(out);
+    const test::AppRun r = test::run_app(
+        "unfold_batch", "--input_dir " + in + " --output_dir " + out + " --configs " +
+                            configs({0, 1, 2, 3}) + " --retrieval_points 100 --jobs " + jobs);
+    SCOPED_TRACE(std::string("--jobs ") + jobs);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
+    ASSERT_EQ(rows.size(), size_t(6 * test::kNumMatrixConfigs));
+    for (const BatchRow& row : rows) {
+      const std::string error = expected_error(row.shape),
+                        stem = out + "/" + row.method + "/" + row.shape;
+      SCOPED_TRACE(row.shape + " " + row.method);
+      if (!error.empty()) {
+        EXPECT_NE(row.status.find(error), std::string::npos) << row.status;
+        EXPECT_FALSE(fs::exists(stem + ".off"));
+        EXPECT_FALSE(fs::exists(stem + ".json"));
+        continue;
+      }
+      EXPECT_EQ(row.status, "ok");
+      EXPECT_TRUE(test::IsSurface(stem + ".off", -100000));
+      EXPECT_TRUE(test::IsMetricsJson(stem + ".json"));
+    }
+    // Text columns first: the method; the method; the class and the method.
+    for (const auto& [table, text_columns] :
+         {std::pair{"retrieval.csv", 1}, {"similarity_dpmu.csv", 1}, {"pose_invariance.csv", 2}})
+      EXPECT_TRUE(test::IsCsv(out + "/" + table, text_columns)) << table;
+  }
+}
+
+// Everything but the timing column of results.csv, and the other tables.
+std::string tables(const std::string& out) {
+  std::ostringstream all;
+  std::istringstream results(test::file_text(out + "/results.csv"));
+  for (std::string line; std::getline(results, line);) {
+    const size_t status = line.rfind(','), seconds = line.rfind(',', status - 1);
+    all << line.substr(0, seconds) << line.substr(status) << '\n';
+  }
+  for (const auto& entry : fs::directory_iterator(out))
+    if (entry.path().extension() == ".csv" && entry.path().filename() != "results.csv")
+      all << entry.path().filename() << ":\n" << test::file_text(entry.path().string());
+  return all.str();
+}
+
+TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
+  const test::TempDir dir;
+  const std::string in = input_dir(dir), list = configs({0, 2});
+  const std::string args = " --configs " + list + " --retrieval_points 100 --jobs 1";
+  ASSERT_EQ(test::run_app("unfold_batch",
+                          "--input_dir " + in + " --output_dir " + dir.file("straight") + args)
+                .exit_code,
+            0);
+
+  // Ctrl-C to the whole process group once the second shape (clean) is done.
+  const std::string out = dir.file("resumed");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    setpgid(0, 0);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDOUT_FILENO);
+    dup2(null, STDERR_FILENO);
+    const std::string bin = std::string(UNFOLD_BIN_DIR) + "/unfold_batch";
+    execl(bin.c_str(), bin.c_str(), "--input_dir", in.c_str(), "--output_dir", out.c_str(),
+          "--configs", list.c_str(), "--retrieval_points", "100", "--jobs", "1", nullptr);
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (!fs::exists(out + "/lsmds/clean.row") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  kill(-pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the batch ended before it was interrupted";
+  ASSERT_FALSE(fs::exists(out + "/results.csv"));
+
+  const auto finished_before = fs::last_write_time(out + "/default/clean.off");
+  const test::AppRun r = test::run_app(
+      "unfold_batch", "--input_dir " + in + " --output_dir " + out + args + " --skip_existing");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(fs::last_write_time(out + "/default/clean.off"), finished_before) << "not kept";
+  EXPECT_EQ(tables(out), tables(dir.file("straight")));
+}
+
+}  // namespace
+}  // namespace unfold
