@@ -22,10 +22,7 @@ void def_metric_functions(py::module_& m) {
   m.def(
       "e_str",
       [](const Vertices& rest, const Vertices& deformed, int exact_limit, int64_t samples) {
-        StretchErrorOptions options;
-        options.exact_limit = exact_limit;
-        options.sample_pairs = samples;
-        return stretch_error(rest, deformed, options).value;
+        return stretch_error(rest, deformed, StretchErrorOptions{exact_limit, samples}).value;
       },
       py::arg("rest"), py::arg("deformed"),
       py::arg("exact_limit") = StretchErrorOptions().exact_limit,
@@ -34,10 +31,8 @@ void def_metric_functions(py::module_& m) {
       "e_geo",
       [](const Vertices& rest, const Vertices& deformed, const Elements& elements, int exact_limit,
          int landmarks) {
-        GeodesicErrorOptions options;
-        options.exact_limit = exact_limit;
-        options.sources = landmarks;
-        return geodesic_error(build_edge_graph(int(rest.rows()), elements), rest, deformed, options)
+        return geodesic_error(build_edge_graph(int(rest.rows()), elements), rest, deformed,
+                              GeodesicErrorOptions{exact_limit, landmarks})
             .value;
       },
       py::arg("rest"), py::arg("deformed"), py::arg("elements"),
@@ -54,9 +49,7 @@ void def_metric_functions(py::module_& m) {
   m.def(
       "retrieval_distance",
       [](const Vertices& A, const Vertices& B, int sample_points, int icp_iterations) {
-        RetrievalOptions options;
-        options.sample_points = sample_points;
-        options.icp_iterations = icp_iterations;
+        const RetrievalOptions options{sample_points, icp_iterations};
         return shape_dissimilarity(retrieval_sample(A, options), retrieval_sample(B, options),
                                    options);
       },
