@@ -38,7 +38,8 @@ def test_float32_noncontiguous_and_int64_inputs_are_converted(tmp_path, demo):
 @pytest.mark.parametrize(
     "V, F, message",
     [
-        (np.zeros((4, 2)), [[0, 1, 2]], r"V must be an \(n, 3\) array of positions, got shape \(4, 2\)"),
+        (np.zeros((4, 2)), [[0, 1, 2]],
+         r"V must be an \(n, 3\) array of positions, got shape \(4, 2\)"),
         (np.zeros(12), [[0, 1, 2]], r"got shape \(12,\)"),
         (np.zeros((4, 3)), [[0, 1, 2, 3]], r"F must be an \(m, 3\) array .* got shape \(1, 4\)"),
         (np.zeros((4, 3)), [[0.0, 1.0, 2.0]], "F must hold integers"),

@@ -130,11 +130,9 @@ def test_strings_with_commas_stay_strings(demo, tmp_path):
 
 
 def test_every_error_is_an_unfold_error_and_a_builtin_one():
-    assert issubclass(unfold.ConfigError, unfold.Error) and issubclass(unfold.ConfigError, ValueError)
-    assert issubclass(unfold.InputError, unfold.Error) and issubclass(unfold.InputError, ValueError)
-    assert issubclass(unfold.NumericalError, unfold.Error)
-    assert issubclass(unfold.NumericalError, RuntimeError)
-    assert issubclass(unfold.OutputError, unfold.Error) and issubclass(unfold.OutputError, OSError)
+    for error, builtin in [(unfold.ConfigError, ValueError), (unfold.InputError, ValueError),
+                           (unfold.NumericalError, RuntimeError), (unfold.OutputError, OSError)]:
+        assert issubclass(error, unfold.Error) and issubclass(error, builtin)
 
 
 def test_help_shows_the_docstring_and_every_config_key():

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import logging
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, Union
 
@@ -38,24 +38,30 @@ PathLike = Union[str, "os.PathLike[str]"]
 
 @dataclass(frozen=True)
 class Result:
-    """One unfolding. Arrays are numpy; the tet mesh's first rows are the surface's vertices."""
+    """One unfolding; arrays are numpy.
+
+    vertices: (n, 3) canonical positions of the surface's vertices, in input
+        order (of the simplified surface with simplify.target_vertices).
+    faces: (m, 3) int32 faces (the input's, triangulated).
+    metrics: the command line's metrics JSON (--metrics_json) as a dict: same
+        keys, same values.
+    tet_vertices: (N, 3) canonical positions of every tet vertex; the first n
+        are the surface's vertices.
+    tets: (T, 4) int32 tetrahedra.
+    rest_tet_vertices: (N, 3) rest positions of every tet vertex.
+    tet_vertex_fields, tet_fields: per tet vertex (rigidity_error,
+        stretch_ratio) and per tet (volume_ratio, rigidity), as written to
+        --tet_output x.vtu.
+    """
 
     vertices: np.ndarray
-    """(n, 3) canonical positions of the surface's vertices, in input order."""
     faces: np.ndarray
-    """(m, 3) int32 faces (the input's, triangulated)."""
     metrics: dict[str, Any]
-    """The metrics JSON of the command line (--metrics_json) as a dict: same keys, same values."""
     tet_vertices: np.ndarray
-    """(N, 3) canonical positions of every tet vertex."""
     tets: np.ndarray
-    """(T, 4) int32 tetrahedra."""
     rest_tet_vertices: np.ndarray
-    """(N, 3) rest positions of every tet vertex."""
     tet_vertex_fields: dict[str, np.ndarray] = field(repr=False)
-    """Per tet vertex, as in --tet_output x.vtu: rigidity_error, stretch_ratio."""
     tet_fields: dict[str, np.ndarray] = field(repr=False)
-    """Per tet, as in --tet_output x.vtu: volume_ratio, rigidity."""
 
     @property
     def rigidity_error(self) -> np.ndarray:
