@@ -60,6 +60,16 @@ def test_config_forms_give_the_same_run(tmp_path, demo):
         np.testing.assert_array_equal(r.vertices, runs[0].vertices)
 
 
+def test_float32_and_strided_inputs_give_the_run_of_their_float64_values(demo):
+    V, F = demo
+    V32 = np.asfortranarray(V.astype(np.float32))  # column-major: rows are strided
+    F64 = np.ascontiguousarray(F.astype(np.int64)[::-1])[::-1]  # a reversed view
+    assert not V32.flags.c_contiguous and not F64.flags.c_contiguous
+    r = unfold.unfold(V32, F64, **SMALL)
+    expected = unfold.unfold(V32.astype(np.float64), F, **SMALL)
+    np.testing.assert_array_equal(r.vertices, expected.vertices)
+
+
 @pytest.mark.parametrize("method", ["local_global", "ceres", "lsmds", "dpmu"])
 def test_every_method_runs_through_the_same_call(demo, method):
     config = SOURCE_DIR / "configs" / f"{method if method != 'local_global' else 'default'}.yaml"
