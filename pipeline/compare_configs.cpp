@@ -55,7 +55,6 @@ std::vector<ComparisonRow> compare_options(const SurfaceMesh& surface,
 std::vector<ComparisonRow> compare_configs(const SurfaceMesh& surface,
                                            const std::vector<std::string>& config_paths,
                                            std::optional<double> fixed_beta) {
-  if (config_paths.empty()) throw UsageError("no configs to compare");
   const auto overrides =
       fixed_beta ? fixed_beta_overrides(*fixed_beta) : std::map<std::string, std::string>{};
   std::vector<NamedOptions> options;
