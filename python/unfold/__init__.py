@@ -89,8 +89,7 @@ def write_mesh(path: PathLike, V: npt.ArrayLike, F: npt.ArrayLike) -> None:
     V: (n, 3) numbers; F: (m, 3) integer indices into V. Raises InputError for
     bad arrays, OutputError naming the file when it cannot be written.
     """
-    V = _arrays.vertices(V)
-    _core.write_mesh(os.fspath(path), V, _arrays.elements(F, len(V)))
+    _core.write_mesh(os.fspath(path), *_arrays.surface(V, F))
 
 
 def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarray, np.ndarray]:
@@ -119,8 +118,7 @@ def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None,
     arrays or surface), NumericalError (the solve failed). The GIL is released
     while it runs, so other Python threads go on.
     """
-    V = _arrays.vertices(V)
-    F = _arrays.elements(F, len(V))
+    V, F = _arrays.surface(V, F)
     path, flat = _config.split(config, overrides)
     return Result(**_core.unfold(V, F, path, flat))
 
@@ -135,8 +133,7 @@ def compare(V: npt.ArrayLike, F: npt.ArrayLike,
     every config runs at this one beta (relative to n/lambda_2) to convergence.
     Returns one dict per config with the columns of unfold_compare's CSV.
     """
-    V = _arrays.vertices(V)
-    F = _arrays.elements(F, len(V))
+    V, F = _arrays.surface(V, F)
     if fixed_beta is not None and not fixed_beta > 0:
         raise ConfigError(f"fixed_beta must be > 0, got {fixed_beta}")
     fixed = _core.fixed_beta_overrides(fixed_beta) if fixed_beta is not None else {}

@@ -39,3 +39,9 @@ def elements(array: npt.ArrayLike, num_vertices: int, corners: int | None = 3,
         bad = a.min() if a.min() < 0 else a.max()
         raise InputError(f"{name} refers to vertex {bad}, but there are {num_vertices} vertices")
     return np.ascontiguousarray(a, dtype=np.int32)
+
+
+def surface(V: npt.ArrayLike, F: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and triangles: vertices(V) and elements(F, len(V))."""
+    V = vertices(V)
+    return V, elements(F, len(V))

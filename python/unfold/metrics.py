@@ -57,8 +57,7 @@ def e_geo(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike,
 
 def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
     """Total area of the triangles F of V."""
-    V = _arrays.vertices(V)
-    return _core.surface_area(V, _arrays.elements(F, len(V)))
+    return _core.surface_area(*_arrays.surface(V, F))
 
 
 def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, area: float) -> float:
