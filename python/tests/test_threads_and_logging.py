@@ -8,7 +8,7 @@ import unfold
 
 
 def test_another_thread_runs_python_during_a_solve():
-    V, F = unfold.demo_shape("1")  # long enough a solve to tell
+    V, F = unfold.demo_shape("1", resolution=110)  # long enough a solve to tell, even idle
     done = threading.Event()
     solver = threading.Thread(target=lambda: (unfold.unfold(V, F), done.set()))
     start = time.perf_counter()
