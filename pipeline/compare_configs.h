@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "config/options.h"
+#include "core/json.h"
 #include "mesh/surface_mesh.h"
 
 namespace unfold {
@@ -19,12 +21,27 @@ struct ComparisonRow {
   double seconds = 0;  ///< lambda_2, solve (not tetrahedralization, shared)
 };
 
+/// The row's columns in CSV order: the one list of column names, shared by the
+/// CSV and the Python binding's rows.
+JsonObject comparison_columns(const ComparisonRow& row);
+
 /// Config overrides that run one beta (relative to n / lambda_2) to
 /// convergence instead of the cascade: the fair way to compare final energies.
 std::map<std::string, std::string> fixed_beta_overrides(double relative_beta);
 
+/// Options with the name their row gets.
+struct NamedOptions {
+  std::string name;
+  Options options;
+};
+
 /// Prepares the surface once (check, simplify, tetrahedralize with the first
-/// config's settings) and unfolds it with each config.
+/// options' settings) and unfolds it with each of the options.
+/// @throws UsageError for no options; otherwise as unfold_surface
+std::vector<ComparisonRow> compare_options(const SurfaceMesh& surface,
+                                           const std::vector<NamedOptions>& options);
+
+/// compare_options with config files, each row named by its file's stem.
 /// @param fixed_beta if set, every config runs with fixed_beta_overrides(*fixed_beta)
 /// @throws UsageError for a bad config or no configs; otherwise as unfold_surface
 std::vector<ComparisonRow> compare_configs(const SurfaceMesh& surface,
@@ -34,7 +51,7 @@ std::vector<ComparisonRow> compare_configs(const SurfaceMesh& surface,
 /// The rows as an aligned text table.
 std::string format_comparison(const std::vector<ComparisonRow>& rows);
 
-/// Writes config,final_energy,E_rig,E_str,E_geo,iterations,seconds (atomically).
+/// Writes the comparison_columns of each row as CSV, with a header (atomically).
 /// @throws OutputError
 void write_comparison_csv(const std::string& path, const std::vector<ComparisonRow>& rows);
 

@@ -5,11 +5,16 @@
 #include <string>
 
 #include "config/options.h"
+#include "core/json.h"
 #include "pipeline/unfold_surface.h"
 
 namespace unfold {
 
-/// Writes the metrics of result to path as JSON (atomically).
+/// The metrics of result as a document: the one list of metric keys, shared by
+/// the JSON file and the Python binding's metrics dictionary.
+Json metrics_document(const UnfoldResult& result, const Options& options);
+
+/// Writes metrics_document(result, options) to path as JSON (atomically).
 /// @throws OutputError if the file cannot be written
 void write_metrics_json(const std::string& path, const UnfoldResult& result,
                         const Options& options);

@@ -55,6 +55,9 @@ bool write_all(int fd, const void* data, size_t size) {
     ::dup2(null_fd, STDOUT_FILENO);
     ::dup2(null_fd, STDERR_FILENO);
   }
+  // Nor should the parent's crash handlers (Python's faulthandler, in the
+  // Python module) report TetGen's crash: it is the usual "no" (see below).
+  for (int sig : {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
   int32_t status = 0;
   tetgenio out;
   try {

@@ -1,0 +1,60 @@
+#include "arrays.h"
+#include "functions.h"
+#include "mesh/edge_graph.h"
+#include "metrics/geodesic_error.h"
+#include "metrics/pose_invariance.h"
+#include "metrics/rigidity_error.h"
+#include "metrics/shape_retrieval.h"
+#include "metrics/stretch_error.h"
+
+namespace py = pybind11;
+
+namespace unfold::python {
+
+void def_metric_functions(py::module_& m) {
+  using release = py::call_guard<py::gil_scoped_release>;
+  m.def(
+      "e_rig",
+      [](const Vertices& rest, const Vertices& deformed, const Elements& elements) {
+        return rigidity_error(build_edge_graph(int(rest.rows()), elements), rest, deformed).mean;
+      },
+      py::arg("rest"), py::arg("deformed"), py::arg("elements"), release());
+  m.def(
+      "e_str",
+      [](const Vertices& rest, const Vertices& deformed, int exact_limit, int64_t samples) {
+        return stretch_error(rest, deformed, StretchErrorOptions{exact_limit, samples}).value;
+      },
+      py::arg("rest"), py::arg("deformed"),
+      py::arg("exact_limit") = StretchErrorOptions().exact_limit,
+      py::arg("samples") = StretchErrorOptions().sample_pairs, release());
+  m.def(
+      "e_geo",
+      [](const Vertices& rest, const Vertices& deformed, const Elements& elements, int exact_limit,
+         int landmarks) {
+        return geodesic_error(build_edge_graph(int(rest.rows()), elements), rest, deformed,
+                              GeodesicErrorOptions{exact_limit, landmarks})
+            .value;
+      },
+      py::arg("rest"), py::arg("deformed"), py::arg("elements"),
+      py::arg("exact_limit") = GeodesicErrorOptions().exact_limit,
+      py::arg("landmarks") = GeodesicErrorOptions().sources, release());
+  m.def(
+      "surface_area",
+      [](const Vertices& V, const Elements& F) { return surface_area(make_surface(V, F)); },
+      py::arg("V"), py::arg("F"), release());
+  m.def(
+      "pose_distance",
+      [](const Vertices& A, const Vertices& B, double area) { return pose_distance(A, B, area); },
+      py::arg("A"), py::arg("B"), py::arg("area"), release());
+  m.def(
+      "retrieval_distance",
+      [](const Vertices& A, const Vertices& B, int sample_points, int icp_iterations) {
+        const RetrievalOptions options{sample_points, icp_iterations};
+        return shape_dissimilarity(retrieval_sample(A, options), retrieval_sample(B, options),
+                                   options);
+      },
+      py::arg("A"), py::arg("B"), py::arg("sample_points") = RetrievalOptions().sample_points,
+      py::arg("icp_iterations") = RetrievalOptions().icp_iterations, release());
+}
+
+}  // namespace unfold::python

@@ -1,0 +1,60 @@
+"""unfold.metrics: the library's metric functions, equal to a run's metrics."""
+
+import numpy as np
+import pytest
+
+import unfold
+from unfold import metrics
+
+
+@pytest.fixture(scope="module")
+def small_result(demo):
+    return unfold.unfold(*demo, simplify={"target_vertices": 400})
+
+
+def rotation(angle):
+    c, s = np.cos(angle), np.sin(angle)
+    return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def test_metrics_equal_the_runs_metrics(small_result):
+    r = small_result
+    P, Q = r.rest_tet_vertices, r.tet_vertices
+    assert metrics.e_rig(P, Q, r.tets) == pytest.approx(r.metrics["E_rig"], rel=1e-12)
+    assert metrics.e_str(P, Q) == pytest.approx(r.metrics["E_str"], rel=1e-12)
+    assert metrics.e_geo(P, Q, r.tets) == pytest.approx(r.metrics["E_geo"], rel=1e-12)
+
+
+def test_metrics_of_known_motions(small_result):
+    r = small_result
+    P, T = r.rest_tet_vertices, r.tets
+    moved = P @ rotation(0.7).T + [1.0, -2.0, 3.0]
+    assert metrics.e_rig(P, moved, T) == pytest.approx(0, abs=1e-9)
+    assert metrics.e_str(P, 1.5 * P) == pytest.approx(0.5, rel=1e-12)
+    assert metrics.e_geo(P, P, T) > 0.01  # straight lines are shorter than edge paths
+    assert metrics.e_geo(P, 2 * moved, T) == pytest.approx(metrics.e_geo(P, P, T), rel=1e-9)
+    assert metrics.e_str(P, 1.5 * P, exact_limit=0, samples=1000) == pytest.approx(0.5)
+
+
+def test_pose_and_retrieval_distances(small_result, demo):
+    r = small_result
+    V = r.vertices
+    area = metrics.surface_area(V, r.faces)
+    assert area > 0
+    assert metrics.surface_area(2 * V, r.faces) == pytest.approx(4 * area)
+    moved = V @ rotation(1.1).T + 5.0
+    assert metrics.pose_distance(V, moved, area) == pytest.approx(0, abs=1e-9)
+    assert metrics.pose_distance(V, r.rest_tet_vertices[: len(V)], area) > 0.01
+    assert metrics.retrieval_distance(V, moved) == pytest.approx(0, abs=1e-6)
+    other = unfold.demo_shape("2", resolution=40)[0]
+    assert metrics.retrieval_distance(V, other, sample_points=200) > 0
+
+
+def test_metric_arguments_are_checked(small_result):
+    r = small_result
+    with pytest.raises(unfold.InputError, match="elements must hold integers"):
+        metrics.e_rig(r.rest_tet_vertices, r.tet_vertices, r.tets.astype(float))
+    with pytest.raises(unfold.InputError, match=r"deformed must be an \(n, 3\) array"):
+        metrics.e_str(r.rest_tet_vertices, r.tet_vertices[:, :2])
+    with pytest.raises(unfold.ConfigError):  # the library's size check
+        metrics.e_str(r.rest_tet_vertices, r.tet_vertices[:10])

@@ -1,0 +1,40 @@
+"""The solve releases the GIL and logs through Python's logging, not stderr."""
+
+import logging
+import threading
+import time
+
+import unfold
+
+
+def test_another_thread_runs_python_during_a_solve():
+    V, F = unfold.demo_shape("1", resolution=110)  # long enough a solve to tell, even idle
+    done = threading.Event()
+    solver = threading.Thread(target=lambda: (unfold.unfold(V, F), done.set()))
+    start = time.perf_counter()
+    solver.start()
+    ticks, last, worst_gap = 0, start, 0.0
+    while not done.is_set():
+        time.sleep(0.001)
+        now = time.perf_counter()
+        ticks, worst_gap, last = ticks + 1, max(worst_gap, now - last), now
+    solver.join()
+    solve_seconds = time.perf_counter() - start
+    assert solve_seconds > 0.5, "the solve is too short to tell"
+    # With the GIL held for the solve this thread would stop for all of it.
+    assert worst_gap < 0.25 * solve_seconds
+    assert ticks > 100
+
+
+def test_progress_goes_to_the_unfold_logger_and_not_to_stderr(demo, caplog, capfd):
+    with caplog.at_level(logging.INFO, logger="unfold"):
+        unfold.unfold(*demo, simplify={"target_vertices": 400})
+    messages = [r.getMessage() for r in caplog.records if r.name == "unfold"]
+    assert any("cascade" in m for m in messages), messages
+    captured = capfd.readouterr()
+    assert captured.err == "" and captured.out == ""
+
+
+def test_silent_by_default(demo, capfd):
+    unfold.unfold(*demo, simplify={"target_vertices": 400})
+    assert capfd.readouterr().err == ""

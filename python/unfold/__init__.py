@@ -1,0 +1,159 @@
+"""unfold: a non-rigid 3D shape (numpy arrays) into its canonical pose.
+
+    import unfold
+    V, F = unfold.read_mesh("shape.off")          # or unfold.demo_shape()
+    r = unfold.unfold(V, F, cascade={"k_iter": 20})
+    unfold.write_mesh("canonical.off", r.vertices, r.faces)
+    print(r.metrics["E_rig"])
+
+The same library as the command-line tool `unfold`: same config keys, same
+results, same metrics. Errors raise unfold.Error subclasses (ConfigError,
+InputError, NumericalError, OutputError) with the command line's one-line
+message. Progress goes to the logging module's "unfold" logger (silent unless
+logging is configured, e.g. logging.basicConfig(level=logging.INFO)).
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from . import _arrays, _config, _core, metrics
+from ._core import ConfigError, Error, InputError, NumericalError, OutputError
+
+__all__ = ["Error", "ConfigError", "InputError", "NumericalError", "OutputError", "Result",
+           "read_mesh", "write_mesh", "demo_shape", "unfold", "compare", "config_keys",
+           "metrics"]
+
+logging.getLogger("unfold").addHandler(logging.NullHandler())
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+@dataclass(frozen=True)
+class Result:
+    """One unfolding; arrays are numpy.
+
+    vertices: (n, 3) canonical positions of the surface's vertices, in input
+        order (of the simplified surface with simplify.target_vertices).
+    faces: (m, 3) int32 faces (the input's, triangulated).
+    metrics: the command line's metrics JSON (--metrics_json) as a dict: same
+        keys, same values.
+    tet_vertices: (N, 3) canonical positions of every tet vertex; the first n
+        are the surface's vertices.
+    tets: (T, 4) int32 tetrahedra.
+    rest_tet_vertices: (N, 3) rest positions of every tet vertex.
+    tet_vertex_fields, tet_fields: per tet vertex (rigidity_error,
+        stretch_ratio) and per tet (volume_ratio, rigidity), as written to
+        --tet_output x.vtu.
+    """
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    metrics: dict[str, Any]
+    tet_vertices: np.ndarray
+    tets: np.ndarray
+    rest_tet_vertices: np.ndarray
+    tet_vertex_fields: dict[str, np.ndarray] = field(repr=False)
+    tet_fields: dict[str, np.ndarray] = field(repr=False)
+
+    @property
+    def rigidity_error(self) -> np.ndarray:
+        """(n,) E_rig's term of each surface vertex."""
+        return self.tet_vertex_fields["rigidity_error"][: len(self.vertices)]
+
+    @property
+    def stretch_ratio(self) -> np.ndarray:
+        """(n,) mean canonical/rest length ratio of each surface vertex's edges."""
+        return self.tet_vertex_fields["stretch_ratio"][: len(self.vertices)]
+
+
+def read_mesh(path: PathLike) -> tuple[np.ndarray, np.ndarray]:
+    """Reads a surface mesh (.off .obj .ply .stl, as the command line).
+
+    Returns (V, F): float64 (n, 3) positions and int32 (m, 3) faces (polygons
+    fan-triangulated). Raises InputError naming the file and the problem.
+    """
+    return _core.read_mesh(os.fspath(path))
+
+
+def write_mesh(path: PathLike, V: npt.ArrayLike, F: npt.ArrayLike) -> None:
+    """Writes a surface mesh (.off .obj .ply .stl, as the command line), atomically.
+
+    V: (n, 3) numbers; F: (m, 3) integer indices into V. Raises InputError for
+    bad arrays, OutputError naming the file when it cannot be written.
+    """
+    _core.write_mesh(os.fspath(path), *_arrays.surface(V, F))
+
+
+def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The command line's built-in demo animal (--demo_pose): pose "rest", "0", "1" or "2".
+
+    resolution: edges along the body, about resolution**2 vertices, in [16, 128]
+    (None: the command line's, about 4000 vertices).
+    """
+    return _core.demo_shape(pose, **({} if resolution is None else {"resolution": resolution}))
+
+
+def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None,
+           **overrides: Any) -> Result:
+    """Unfolds a closed triangle surface into its canonical pose.
+
+    V: (n, 3) positions (any real dtype and layout); F: (m, 3) integer faces.
+    config: a YAML file path (as --config) or a dict of config keys, nested
+    ({"cascade": {"k_iter": 20}}) or dotted ({"cascade.k_iter": 20}).
+    overrides: config keys on top of config, as keywords: method="ceres",
+    cascade={"k_iter": 20}, **{"beta.value": 2.0}, or a flag name of the
+    command line (k_iter=20, beta=2.0). Every key: unfold.config_keys().
+    The baselines and backends are methods: method="local_global" (default),
+    "ceres", "dpmu", "lsmds".
+
+    Returns a Result. Raises ConfigError (bad key or value), InputError (bad
+    arrays or surface), NumericalError (the solve failed). The GIL is released
+    while it runs, so other Python threads go on.
+    """
+    V, F = _arrays.surface(V, F)
+    path, flat = _config.split(config, overrides)
+    return Result(**_core.unfold(V, F, path, flat))
+
+
+def compare(V: npt.ArrayLike, F: npt.ArrayLike,
+            configs: Sequence[_config.Config | tuple[str, _config.Config]],
+            fixed_beta: float | None = None) -> list[dict[str, Any]]:
+    """Several configs on one tet mesh, as the command line unfold_compare.
+
+    configs: YAML paths (a row is named by the file's stem), dicts (named
+    config1, config2, ...) or (name, path or dict) pairs. fixed_beta: if set,
+    every config runs at this one beta (relative to n/lambda_2) to convergence.
+    Returns one dict per config with the columns of unfold_compare's CSV.
+    """
+    V, F = _arrays.surface(V, F)
+    if fixed_beta is not None and not fixed_beta > 0:
+        raise ConfigError(f"fixed_beta must be > 0, got {fixed_beta}")
+    fixed = _core.fixed_beta_overrides(fixed_beta) if fixed_beta is not None else {}
+    runs = []
+    for k, item in enumerate(configs):
+        name, config = item if isinstance(item, tuple) else (None, item)
+        path, flat = _config.split(config, {})
+        if name is None:
+            name = os.path.splitext(os.path.basename(path))[0] if path else f"config{k + 1}"
+        runs.append((name, path, {**flat, **fixed}))
+    return _core.compare(V, F, runs)
+
+
+def config_keys() -> list[tuple[str, str, str]]:
+    """Every config key as (command-line flag, YAML key, help)."""
+    return _core.config_keys()
+
+
+def _key_list() -> str:
+    return "\n".join(f"    {path} (flag {flag}): {text}" for flag, path, text in config_keys())
+
+
+unfold.__doc__ = f"{unfold.__doc__}\n    Config keys:\n{_key_list()}\n"

@@ -1,0 +1,75 @@
+"""The quality metrics of the paper and of the evaluation, on numpy arrays.
+
+The same functions that fill Result.metrics and the batch reports:
+E_rig (Eq. 8), E_str (Eq. 9), E_geo (Eq. 10), pose distance (two canonical
+forms of one shape) and retrieval distance (two shapes' canonical forms).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy.typing as npt
+
+from . import _arrays, _core
+
+
+def _set(**options: Any) -> dict[str, Any]:
+    return {name: value for name, value in options.items() if value is not None}
+
+
+def e_rig(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike) -> float:
+    """E_rig: mean over vertices of how far each cell's motion is from a rotation.
+
+    rest, deformed: (n, 3) positions; elements: (m, k) vertex indices (tets or
+    triangles) whose edges are the cells. 0 for any rigid motion.
+    """
+    P = _arrays.vertices(rest, "rest")
+    return _core.e_rig(P, _arrays.vertices(deformed, "deformed"),
+                       _arrays.elements(elements, len(P), None, "elements"))
+
+
+def e_str(rest: npt.ArrayLike, deformed: npt.ArrayLike, exact_limit: int | None = None,
+          samples: int | None = None) -> float:
+    """E_str: mean relative change of pairwise distances (s - 1 for a scale by s).
+
+    Exact up to exact_limit vertices, else estimated from `samples` random
+    pairs (None: the defaults of metrics.stretch_exact_limit and
+    metrics.stretch_samples).
+    """
+    return _core.e_str(_arrays.vertices(rest, "rest"), _arrays.vertices(deformed, "deformed"),
+                       **_set(exact_limit=exact_limit, samples=samples))
+
+
+def e_geo(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike,
+          exact_limit: int | None = None, landmarks: int | None = None) -> float:
+    """E_geo: deformed Euclidean distances against rest geodesics along the elements' edges.
+
+    Exact up to exact_limit vertices, else from `landmarks` source vertices
+    (None: the defaults of metrics.geodesic_exact_limit and
+    metrics.geodesic_landmarks).
+    """
+    P = _arrays.vertices(rest, "rest")
+    return _core.e_geo(P, _arrays.vertices(deformed, "deformed"),
+                       _arrays.elements(elements, len(P), None, "elements"),
+                       **_set(exact_limit=exact_limit, landmarks=landmarks))
+
+
+def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
+    """Total area of the triangles F of V."""
+    return _core.surface_area(*_arrays.surface(V, F))
+
+
+def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, area: float) -> float:
+    """Mean vertex distance of A and B (corresponding rows) after the best rigid
+    alignment, divided by sqrt(area) (e.g. surface_area of the input pose)."""
+    return _core.pose_distance(_arrays.vertices(A, "A"), _arrays.vertices(B, "B"), area)
+
+
+def retrieval_distance(A: npt.ArrayLike, B: npt.ArrayLike, sample_points: int | None = None,
+                       icp_iterations: int | None = None) -> float:
+    """Dissimilarity of two shapes (rows need not correspond), as in the retrieval
+    tables: normalised samples, best principal-axis flip, ICP, mean nearest-point distance."""
+    return _core.retrieval_distance(_arrays.vertices(A, "A"), _arrays.vertices(B, "B"),
+                                    **_set(sample_points=sample_points,
+                                           icp_iterations=icp_iterations))
