@@ -22,7 +22,8 @@ TEST_P(PipelineWolf, UnfoldsWithThePapersQuality) {
   const std::string path = test::shared_data(std::string("tosca/") + GetParam() + ".off");
   if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/" << GetParam() << ".off";
   const SurfaceMesh input = read_surface_mesh(path);
-  const UnfoldResult r = unfold_surface(input, Options{});
+  const Options defaults;
+  const UnfoldResult r = unfold_surface(input, defaults);
   ASSERT_EQ(r.canonical.V.rows(), 4344);
   EXPECT_EQ(r.canonical.faces, input.faces);
   EXPECT_TRUE(r.canonical.V.allFinite());
@@ -40,8 +41,9 @@ INSTANTIATE_TEST_SUITE_P(Tosca, PipelineWolf, ::testing::Values("wolf0", "wolf1"
 TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
   const SurfaceMesh a = make_articulated_shape(ShapePose::preset(0));
   const SurfaceMesh b = make_articulated_shape(ShapePose::preset(1));
-  const UnfoldResult ua = unfold_surface(a, Options{});
-  const UnfoldResult ub = unfold_surface(b, Options{});
+  const Options paper = load_options(UNFOLD_SOURCE_DIR "/configs/paper.yaml");
+  const UnfoldResult ua = unfold_surface(a, paper);
+  const UnfoldResult ub = unfold_surface(b, paper);
   const double before = aligned_distance(a.V, b.V);
   const double after = aligned_distance(ua.canonical.V, ub.canonical.V);
   EXPECT_LT(after, 0.5 * before) << "poses " << before << " apart, canonical forms " << after;
@@ -69,7 +71,8 @@ TEST(PipelineInput, RefusesAnOpenSurface) {
   SurfaceMesh open = test::octahedron();
   open.faces.pop_back();
   try {
-    unfold_surface(open, Options{});
+    const Options defaults;
+    unfold_surface(open, defaults);
     FAIL() << "an open surface was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("open"), std::string::npos) << e.what();
