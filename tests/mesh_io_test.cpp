@@ -265,9 +265,8 @@ TEST(MeshIoTest, AtomicWriteKeepsOldFileAndNoTempWhenWriterThrows) {
 }
 
 TEST(MeshIoTest, ReadsSharedCentaurWithAllFaces) {
-  const char* env = std::getenv("UNFOLD_SHARED_DATA");
-  const std::string path = std::string(env ? env : "/work/shared/data") + "/tosca/centaur3.off";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is not available";
+  const std::string path = test::shared_data("tosca/centaur3.off");
+  if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/centaur3.off";
   std::ifstream in(path);
   std::string keyword;
   size_t num_vertices = 0, num_faces = 0;
