@@ -485,10 +485,9 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
             sum += d, ratio_sum += ratio, ratio_max = std::max(ratio_max, ratio);
             ++pairs;
           }
-      if (pairs > 0)
+      if (pairs > 0) {
         pose << c << ',' << labels[m] << ',' << sum / pairs << ',' << ratio_sum / pairs << ','
              << ratio_max << ',' << pairs << '\n';
-      if (pairs > 0) {
         std::vector<PosePanel> panels;
         for (size_t i = 0; i < n; ++i)
           if (classes[i] == c && on_input[m][i] &&

@@ -20,12 +20,11 @@ Image render_poses(const std::vector<PosePanel>& panels, const Eigen::MatrixX3i&
       reference = V;
     else
       V = align_rigidly(reference, V).aligned;
-    columns.push_back({p.title, V, F, {}});
+    columns.push_back({title + ": " + p.title, V, F, {}});
   }
   RenderOptions options;
   options.panel_width = 280;
   options.panel_height = 200;
-  for (RenderPanel& column : columns) column.title = title + ": " + column.title;
   return render_comparison(columns, options);
 }
 

@@ -2,7 +2,6 @@
 
 #include <Eigen/SparseCholesky>
 #include <cmath>
-#include <vector>
 
 #include "core/errors.h"
 #include "solvers/best_rotations.h"
@@ -16,16 +15,8 @@ Eigen::MatrixX3d place_interior(const EdgeGraph& graph, const Eigen::MatrixX3d& 
   if (P.rows() != n || Q.rows() != n || num_fixed < 1 || num_fixed > n)
     throw UsageError("place_interior: need P and Q with one row per graph vertex and 1 to n fixed");
   if (m == 0) return Q;
-  // Free block of the graph Laplacian, and the edges from free to fixed vertices.
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (int i = num_fixed; i < n; ++i) {
-    triplets.emplace_back(i - num_fixed, i - num_fixed, double(graph.degree(i)));
-    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
-      if (graph.neighbors[size_t(k)] >= num_fixed)
-        triplets.emplace_back(i - num_fixed, graph.neighbors[size_t(k)] - num_fixed, -1.0);
-  }
-  Eigen::SparseMatrix<double> L(m, m);
-  L.setFromTriplets(triplets.begin(), triplets.end());
+  // The free vertices' block of the graph Laplacian; edges to fixed vertices go to the right side.
+  const Eigen::SparseMatrix<double> L = graph_laplacian(graph).bottomRightCorner(m, m);
   const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(L);
   if (ldlt.info() != Eigen::Success)
     throw NumericalError(
