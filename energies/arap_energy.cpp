@@ -2,7 +2,7 @@
 
 #include "core/parallel.h"
 #include "energies/jet_evaluation.h"
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
 
 namespace unfold {
 
@@ -12,16 +12,7 @@ ArapEnergy::ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
       graph_(graph),
       rest_(rest),
       weights_(std::move(edge_weights)),
-      weighted_edges_(graph.neighbors.size(), 3),
-      weighted_laplacian_rest_(RowMatrixX3d::Zero(rest.rows(), 3)) {
-  for (int i = 0; i < graph.num_vertices; ++i)
-    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
-      const double w = weights_[size_t(graph.neighbor_edge[size_t(k)])];
-      weighted_edges_.row(k) = w * (rest.row(i) - rest.row(graph.neighbors[size_t(k)]));
-      weighted_laplacian_rest_.row(i) += weighted_edges_.row(k);
-      constant_ += weighted_edges_.row(k).dot(rest.row(i) - rest.row(graph.neighbors[size_t(k)]));
-    }
-}
+      cells_(cell_rest_edges(graph, rest, weights_)) {}
 
 double ArapEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
                             Eigen::MatrixX3d* grad) const {
@@ -53,24 +44,17 @@ void ArapEnergy::add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* 
   // B_i = sum_j w_ij (R_i + R_j)(p_i - p_j) = R_i (L_w P)_i + sum_j R_j w_ij (p_i - p_j).
 #pragma omp parallel for schedule(static) if (graph_.num_vertices >= kMinParallelRows)
   for (int i = 0; i < graph_.num_vertices; ++i) {
-    Eigen::Vector3d b = R[size_t(i)] * weighted_laplacian_rest_.row(i).transpose();
+    Eigen::Vector3d b = R[size_t(i)] * cells_.weighted_laplacian_rest.row(i).transpose();
     for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k)
-      b.noalias() += R[size_t(graph_.neighbors[size_t(k)])] * weighted_edges_.row(k).transpose();
+      b.noalias() +=
+          R[size_t(graph_.neighbors[size_t(k)])] * cells_.weighted_edges.row(k).transpose();
     B->row(i) += scale * b.transpose();
   }
 }
 
 void ArapEnergy::add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
                                          std::vector<Eigen::Matrix3d>* S) const {
-  const RowMatrixX3d q = Q;
-#pragma omp parallel for schedule(static) if (graph_.num_vertices >= kMinParallelRows)
-  for (int i = 0; i < graph_.num_vertices; ++i) {
-    // sum_j w_ij e_ij (q_i - q_j)^T = (L_w P)_i q_i^T - sum_j w_ij e_ij q_j^T
-    Eigen::Matrix3d s = weighted_laplacian_rest_.row(i).transpose() * q.row(i);
-    for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k)
-      s.noalias() -= weighted_edges_.row(k).transpose() * q.row(graph_.neighbors[size_t(k)]);
-    (*S)[size_t(i)] += scale * s;
-  }
+  add_cell_covariances(graph_, cells_, Q, scale, S);
 }
 
 }  // namespace unfold

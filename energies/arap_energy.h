@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "energies/energy_term.h"
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
+#include "mesh/cell_covariances.h"
 #include "mesh/edge_graph.h"
 
 namespace unfold {
@@ -48,11 +49,10 @@ class ArapEnergy : public EnergyTerm {
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
   void add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const override;
   /// sum_i sum_j w_ij |p_i - p_j|^2: rotations keep lengths, so c does not depend on R.
-  double constant(const Rotations& /*R*/) const override { return constant_; }
+  double constant(const Rotations& /*R*/) const override { return cells_.weighted_squared_length; }
   bool uses_rotations() const override { return true; }
   void add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
                                std::vector<Eigen::Matrix3d>* S) const override;
-  const std::vector<double>& edge_weights() const { return weights_; }
 
  private:
   const EdgeGraph& graph_;
@@ -60,9 +60,7 @@ class ArapEnergy : public EnergyTerm {
   std::vector<double> weights_;
   // The local and global steps sweep every cell each iteration: they read
   // these, laid out in the graph's CSR order, instead of gathering from rest_.
-  RowMatrixX3d weighted_edges_;           ///< per CSR entry k of cell i: w_ij (p_i - p_j)
-  RowMatrixX3d weighted_laplacian_rest_;  ///< (L_w P)_i = sum_j w_ij (p_i - p_j)
-  double constant_ = 0;                   ///< sum_i sum_j w_ij |p_i - p_j|^2
+  CellRestEdges cells_;
 };
 
 }  // namespace unfold

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "solvers/best_rotations.h"
+#include "geometry/rotations.h"
 
 namespace unfold {
 

@@ -10,7 +10,7 @@
 #include <array>
 #include <utility>
 
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
 
 namespace unfold {
 

@@ -1,7 +1,7 @@
 #include "energies/user_pairs_energy.h"
 
 #include "energies/jet_evaluation.h"
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
 
 namespace unfold {
 

@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 
 #include "energies/jet_evaluation.h"
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
 #include "mesh/tet_volumes.h"
 
 namespace unfold {

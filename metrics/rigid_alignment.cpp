@@ -1,7 +1,7 @@
 #include "metrics/rigid_alignment.h"
 
 #include "core/errors.h"
-#include "solvers/best_rotations.h"
+#include "geometry/best_rotation.h"
 
 namespace unfold {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/errors.h"
-#include "solvers/best_rotations.h"
+#include "mesh/best_rotations.h"
 
 namespace unfold {
 

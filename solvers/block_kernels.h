@@ -10,7 +10,7 @@
 #include <type_traits>
 
 #include "core/parallel.h"
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
 
 namespace unfold {
 

@@ -5,7 +5,7 @@
 #include <glog/logging.h>
 
 #include "core/errors.h"
-#include "energies/row_major.h"
+#include "geometry/row_major.h"
 #include "metrics/edge_ratio.h"
 #include "solvers/local_global.h"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/errors.h"
-#include "solvers/best_rotations.h"
+#include "mesh/best_rotations.h"
 
 namespace unfold {
 

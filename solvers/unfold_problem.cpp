@@ -1,6 +1,7 @@
 #include "solvers/unfold_problem.h"
 
 #include "core/parallel.h"
+#include "geometry/best_rotation.h"
 
 namespace unfold {
 

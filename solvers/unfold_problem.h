@@ -7,7 +7,7 @@
 
 #include "energies/energy_terms.h"
 #include "mesh/edge_graph.h"
-#include "solvers/best_rotations.h"
+#include "geometry/rotations.h"
 
 namespace unfold {
 

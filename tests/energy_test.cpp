@@ -11,10 +11,11 @@
 #include "energies/arap_energy.h"
 #include "energies/cotangent_weights.h"
 #include "energies/edge_length_energy.h"
-#include "energies/row_major.h"
 #include "energies/stretch_energy.h"
 #include "energies/user_pairs_energy.h"
 #include "energies/volume_energy.h"
+#include "geometry/best_rotation.h"
+#include "geometry/row_major.h"
 #include "test_meshes.h"
 
 namespace unfold {

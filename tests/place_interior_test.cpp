@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "mesh/best_rotations.h"
 #include "mesh/edge_graph.h"
-#include "solvers/best_rotations.h"
 #include "test_meshes.h"
 
 namespace unfold {

@@ -6,7 +6,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "solvers/best_rotations.h"
+#include "geometry/best_rotation.h"
+#include "mesh/best_rotations.h"
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"

@@ -1,4 +1,4 @@
-#include "solvers/best_rotations.h"
+#include "geometry/best_rotation.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
@@ -105,21 +105,6 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d&
     }
   }
   return best_rotation(cov);
-}
-
-void best_rotations(const EdgeGraph& g, const Eigen::MatrixX3d& rest,
-                    const Eigen::MatrixX3d& current, Rotations* R) {
-  R->resize(size_t(g.num_vertices));
-#pragma omp parallel for schedule(static)
-  for (int i = 0; i < g.num_vertices; ++i) {
-    const Eigen::RowVector3d p = rest.row(i), q = current.row(i);
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (int k = g.offsets[size_t(i)]; k < g.offsets[size_t(i) + 1]; ++k) {
-      const int j = g.neighbors[size_t(k)];
-      cov.noalias() += (p - rest.row(j)).transpose() * (q - current.row(j));
-    }
-    (*R)[size_t(i)] = g.degree(i) > 0 ? best_rotation(cov) : Eigen::Matrix3d::Identity();
-  }
 }
 
 }  // namespace unfold

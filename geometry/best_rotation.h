@@ -1,15 +1,11 @@
-// Local step of the local-global solver (paper Eq. 2): the rotation that best
-// maps each cell's rest edges onto its current edges.
+// The rotation that best maps a set of source vectors onto target vectors
+// (Kabsch), given their 3x3 covariance: what the local step (fit_rotations,
+// solvers/unfold_problem.h) and the rigidity metrics solve for every cell.
 #pragma once
 
 #include <Eigen/Core>
-#include <vector>
-
-#include "mesh/edge_graph.h"
 
 namespace unfold {
-
-using Rotations = std::vector<Eigen::Matrix3d>;
 
 /// The rotation R minimising sum_k |target_k - R source_k|^2 (Kabsch), with
 /// det(R) = +1 enforced by flipping the weakest singular direction. Computed as
@@ -25,13 +21,5 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov);
 /// to about 1e-12.
 /// @param guess a rotation
 Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d& guess);
-
-/// For every vertex i: R_i = argmin_R sum_{j in N_i} |(q_i - q_j) - R (p_i - p_j)|^2,
-/// in parallel over vertices. Isolated vertices get the identity.
-/// @param rest    rest positions p (n x 3)
-/// @param current current positions q (n x 3)
-/// @param R       output, resized to n
-void best_rotations(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
-                    const Eigen::MatrixX3d& current, Rotations* R);
 
 }  // namespace unfold
