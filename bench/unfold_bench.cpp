@@ -40,7 +40,6 @@ constexpr int kDirectLimit = 60000;
 struct BenchMesh {
   std::string name;
   TetMesh tets;
-  EdgeGraph graph;
   UnfoldProblem problem;
   std::shared_ptr<AmgData> amg;  ///< of the beta Laplacian
   double beta = 0;
@@ -65,16 +64,14 @@ const BenchMesh& bench_mesh() {
       tet_options.max_volume = std::atof(volume);
     m.tets = tetrahedralize(surface, tet_options);
     sort_interior_vertices(&m.tets);  // as the pipeline does
-    m.graph = build_edge_graph(int(m.tets.V.rows()), m.tets.T);
-    m.problem.graph = &m.graph;
-    m.problem.rest = m.tets.V;
-    m.problem.terms = make_energy_terms(m.tets, m.graph, EnergyOptions{});
+    m.problem = make_unfold_problem(m.tets, build_edge_graph(int(m.tets.V.rows()), m.tets.T),
+                                    EnergyOptions{});
     const Eigen::SparseMatrix<double> L = beta_laplacian(m.problem);
     m.amg = std::make_shared<AmgData>();
     amg_precomputation(L, AmgOptions{}, m.amg.get());
-    m.beta = 1.5 * m.graph.num_vertices / fiedler_value(L, *m.amg);
+    m.beta = 1.5 * m.problem.graph->num_vertices / fiedler_value(L, *m.amg);
     std::fprintf(stderr, "bench mesh: %s, %d tet vertices, %d edges\n", m.name.c_str(),
-                 m.graph.num_vertices, m.graph.num_edges());
+                 m.problem.graph->num_vertices, m.problem.graph->num_edges());
     return m;
   }();
   return mesh;
@@ -89,7 +86,7 @@ LinearSolverOptions solver_arg(const benchmark::State& state) {
 
 // Skips direct-solver benchmarks on meshes where one factorization takes minutes.
 bool skip_direct(benchmark::State& state, bool direct) {
-  if (!direct || bench_mesh().graph.num_vertices <= kDirectLimit) return false;
+  if (!direct || bench_mesh().problem.graph->num_vertices <= kDirectLimit) return false;
   state.SkipWithError("direct solver skipped above 60000 vertices");
   return true;
 }
@@ -117,8 +114,8 @@ SparseLdlt::Backend backend_arg(const benchmark::State& state) {
 }
 
 Eigen::SparseMatrix<double> global_matrix(const BenchMesh& m) {
-  Eigen::SparseMatrix<double> A = (m.beta + 1.0) * graph_laplacian(m.graph);
-  A.diagonal().array() -= double(m.graph.num_vertices);
+  Eigen::SparseMatrix<double> A = (m.beta + 1.0) * graph_laplacian(*m.problem.graph);
+  A.diagonal().array() -= double(m.problem.graph->num_vertices);
   return A;
 }
 
@@ -226,7 +223,7 @@ void BM_IterationChecks(benchmark::State& state) {
   SolverState s(m, LinearSolverOptions{});
   for (auto _ : state) {
     benchmark::DoNotOptimize(energy_after_global_step(s.data, s.R, s.Q));
-    benchmark::DoNotOptimize(edge_ratio(m.graph, m.tets.V, s.Q));
+    benchmark::DoNotOptimize(edge_ratio(*m.problem.graph, m.tets.V, s.Q));
   }
 }
 
@@ -247,7 +244,7 @@ void BM_Cascade(benchmark::State& state) {
   int iterations = 0;
   for (auto _ : state) {
     LocalGlobalBackend backend(m.problem, solver_arg(state), m.amg);
-    iterations = run_cascade(m.problem, backend, options, options.k_iter).iterations;
+    iterations = run_cascade(m.problem, backend, options).iterations;
   }
   state.counters["iterations"] = iterations;
 }
@@ -262,7 +259,7 @@ Eigen::MatrixX3d moved(const BenchMesh& m) {
 void BM_RigidityError(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
   const Eigen::MatrixX3d Q = moved(m);
-  for (auto _ : state) benchmark::DoNotOptimize(rigidity_error(m.graph, m.tets.V, Q).mean);
+  for (auto _ : state) benchmark::DoNotOptimize(rigidity_error(*m.problem.graph, m.tets.V, Q).mean);
 }
 BENCHMARK(BM_RigidityError)->Unit(benchmark::kMillisecond);
 
@@ -279,7 +276,7 @@ void BM_GeodesicError(benchmark::State& state) {
   const BenchMesh& m = bench_mesh();
   const Eigen::MatrixX3d Q = moved(m);
   GeodesicError e;
-  for (auto _ : state) e = geodesic_error(m.graph, m.tets.V, Q);
+  for (auto _ : state) e = geodesic_error(*m.problem.graph, m.tets.V, Q);
   state.counters["sources"] = e.sources_used;
 }
 BENCHMARK(BM_GeodesicError)->Unit(benchmark::kMillisecond);

@@ -11,6 +11,7 @@
 
 #include "config/config_keys.h"
 #include "core/errors.h"
+#include "solvers/backend_support.h"
 
 namespace unfold {
 namespace {
@@ -125,6 +126,19 @@ void require(bool ok, const std::string& key, const std::string& what) {
   if (!ok) throw UsageError("config key '" + key + "' " + what);
 }
 
+// The terms `options` enable, built on one tetrahedron: what tells, before any
+// mesh is read, whether the method can run them. The pairs file is read when
+// the run builds its problem, where make_backend checks the terms again.
+EnergyTerms probe_terms(EnergyOptions options) {
+  options.user_pairs_file.clear();
+  TetMesh tet;
+  tet.V = (Eigen::MatrixX3d(4, 3) << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1).finished();
+  tet.T = (Eigen::MatrixX4i(1, 4) << 0, 1, 2, 3).finished();
+  tet.num_surface_vertices = 4;
+  return make_energy_terms(
+      tet, std::make_shared<const EdgeGraph>(build_edge_graph(4, Eigen::MatrixXi(tet.T))), options);
+}
+
 }  // namespace
 
 Options load_options(const std::string& config_path,
@@ -215,9 +229,6 @@ void validate_options(const Options& o) {
           "must be a finite number >= 0");
   require(e.arap_weight > 0 || e.edge_length_weight > 0, "arap.weight",
           "is 0 and so is edge_length.weight: nothing bounds the stretch term");
-  const bool ceres_backend = o.method == "ceres" || o.method == "dpmu";
-  require(e.edge_length_weight == 0 || ceres_backend, "edge_length.weight",
-          "needs method: ceres or dpmu (the edge-length term is not quadratic)");
   require(o.method != "dpmu" || (e.arap_weight == 0 && e.edge_length_weight > 0), "method",
           "dpmu needs arap.weight: 0 and edge_length.weight > 0 (see configs/dpmu.yaml)");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
@@ -226,8 +237,10 @@ void validate_options(const Options& o) {
           "must be a positive finite number");
   require(std::isfinite(e.volume_weight) && e.volume_weight >= 0, "volume.weight",
           "must be a finite number >= 0");
-  require(e.volume_weight == 0 || ceres_backend, "volume.weight",
-          "needs method: ceres or dpmu (the volume term is not quadratic)");
+  if (o.method != "lsmds") {
+    const std::string refused = why_backend_cannot_run(o.method, probe_terms(e));
+    require(refused.empty(), "method", "is " + o.method + ", but " + refused);
+  }
   validate_linear_solver_options(o.linear_solver);
   validate_ceres_options(o.ceres);
   validate_lsmds_options(o.lsmds);

@@ -1,37 +1,34 @@
 #include "energies/arap_energy.h"
 
 #include "core/parallel.h"
-#include "energies/jet_evaluation.h"
+#include "energies/difference_residual.h"
+#include "energies/residual_sum.h"
 #include "geometry/row_major.h"
 
 namespace unfold {
 
-ArapEnergy::ArapEnergy(const EdgeGraph& graph, const Eigen::MatrixX3d& rest,
+ArapEnergy::ArapEnergy(std::shared_ptr<const EdgeGraph> graph, const Eigen::MatrixX3d& rest,
                        std::vector<double> edge_weights, double weight)
-    : EnergyTerm(weight, true),
-      graph_(graph),
+    : QuadraticTerm(graph->num_vertices, weight, true),
+      graph_(std::move(graph)),
       rest_(rest),
       weights_(std::move(edge_weights)),
-      cells_(cell_rest_edges(graph, rest, weights_)) {}
+      cells_(cell_rest_edges(*graph_, rest, weights_)) {}
 
-double ArapEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
-                            Eigen::MatrixX3d* grad) const {
-  ResidualSum sum(Q, scale, grad);
-  double energy = 0;
-  for (int i = 0; i < graph_.num_vertices; ++i)
-    for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k) {
-      const int j = graph_.neighbors[size_t(k)];
-      const double w = weights_[size_t(graph_.neighbor_edge[size_t(k)])];
-      energy += sum.add<3, 2>(
-          ArapEdgeResidual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose(), w), {i, j});
+void ArapEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& R,
+                               ResidualSum* sum) const {
+  const EdgeGraph& g = *graph_;
+  for (int i = 0; i < g.num_vertices; ++i)
+    for (int k = g.offsets[size_t(i)]; k < g.offsets[size_t(i) + 1]; ++k) {
+      const int j = g.neighbors[size_t(k)];
+      sum->add<3, 2>(DifferenceResidual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose()),
+                     {i, j}, weights_[size_t(g.neighbor_edge[size_t(k)])]);
     }
-  sum.finish();
-  return energy;
 }
 
 void ArapEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const {
-  for (int e = 0; e < graph_.num_edges(); ++e) {
-    const int i = graph_.edges(e, 0), j = graph_.edges(e, 1);
+  for (int e = 0; e < graph_->num_edges(); ++e) {
+    const int i = graph_->edges(e, 0), j = graph_->edges(e, 1);
     const double w = 2.0 * scale * weights_[size_t(e)];
     H->emplace_back(i, i, w);
     H->emplace_back(j, j, w);
@@ -42,19 +39,19 @@ void ArapEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* 
 
 void ArapEnergy::add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const {
   // B_i = sum_j w_ij (R_i + R_j)(p_i - p_j) = R_i (L_w P)_i + sum_j R_j w_ij (p_i - p_j).
-#pragma omp parallel for schedule(static) if (graph_.num_vertices >= kMinParallelRows)
-  for (int i = 0; i < graph_.num_vertices; ++i) {
+#pragma omp parallel for schedule(static) if (graph_->num_vertices >= kMinParallelRows)
+  for (int i = 0; i < graph_->num_vertices; ++i) {
     Eigen::Vector3d b = R[size_t(i)] * cells_.weighted_laplacian_rest.row(i).transpose();
-    for (int k = graph_.offsets[size_t(i)]; k < graph_.offsets[size_t(i) + 1]; ++k)
+    for (int k = graph_->offsets[size_t(i)]; k < graph_->offsets[size_t(i) + 1]; ++k)
       b.noalias() +=
-          R[size_t(graph_.neighbors[size_t(k)])] * cells_.weighted_edges.row(k).transpose();
+          R[size_t(graph_->neighbors[size_t(k)])] * cells_.weighted_edges.row(k).transpose();
     B->row(i) += scale * b.transpose();
   }
 }
 
 void ArapEnergy::add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,
                                          std::vector<Eigen::Matrix3d>* S) const {
-  add_cell_covariances(graph_, cells_, Q, scale, S);
+  add_cell_covariances(*graph_, cells_, Q, scale, S);
 }
 
 }  // namespace unfold

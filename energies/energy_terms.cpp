@@ -11,15 +11,15 @@
 
 namespace unfold {
 
-EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
+EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
                               const EnergyOptions& options) {
   EnergyTerms terms;
   terms.push_back(std::make_unique<StretchEnergy>(graph, options.stretch_weight));
   std::vector<double> weights;
   if (options.arap_weights == "uniform")
-    weights.assign(size_t(graph.num_edges()), 1.0);
+    weights.assign(size_t(graph->num_edges()), 1.0);
   else if (options.arap_weights == "cotangent")
-    weights = cotangent_weights(tets.V, tets.T, graph);
+    weights = cotangent_weights(tets.V, tets.T, *graph);
   else
     throw UsageError("config key 'arap.weights' must be uniform or cotangent, got '" +
                      options.arap_weights + "'");
@@ -29,7 +29,7 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
     terms.push_back(std::make_unique<EdgeLengthEnergy>(graph, tets.V, options.edge_length_weight));
   if (!options.user_pairs_file.empty())
     terms.push_back(std::make_unique<UserPairsEnergy>(
-        read_user_pairs(options.user_pairs_file, tets.num_surface_vertices),
+        read_user_pairs(options.user_pairs_file, tets.num_surface_vertices), int(tets.V.rows()),
         options.user_pairs_gamma));
   if (options.volume_weight > 0)
     terms.push_back(std::make_unique<VolumeEnergy>(tets.V, tets.T, options.volume_weight));

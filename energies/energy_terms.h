@@ -24,10 +24,11 @@ struct EnergyOptions {
 using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
 
 /// The terms enabled by `options` on a tet mesh: stretch, and ARAP, edge
-/// lengths, user pairs and volume when configured (weight > 0, a pairs file). The terms keep a
-/// reference to `graph`.
+/// lengths, user pairs and volume when configured (weight > 0, a pairs file). The terms
+/// share `graph`.
+/// @param graph the edge graph of `tets` (of its surface when tets.T is empty)
 /// @throws UsageError for an unknown arap_weights, InputError for a bad pairs file
-EnergyTerms make_energy_terms(const TetMesh& tets, const EdgeGraph& graph,
+EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
                               const EnergyOptions& options);
 
 }  // namespace unfold

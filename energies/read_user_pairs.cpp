@@ -6,15 +6,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/ends_with.h"
 #include "core/errors.h"
 
 namespace unfold {
 namespace {
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 UserPair make_pair(const double (&v)[5], int num_vertices, const std::string& where) {
   for (double x : v)

@@ -2,8 +2,7 @@
 
 #include <Eigen/Geometry>
 
-#include "energies/jet_evaluation.h"
-#include "geometry/row_major.h"
+#include "energies/residual_sum.h"
 #include "mesh/tet_volumes.h"
 
 namespace unfold {
@@ -22,15 +21,11 @@ VolumeEnergy::VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i&
   }
 }
 
-double VolumeEnergy::evaluate(const Eigen::MatrixX3d& Q, const Rotations& /*R*/, double scale,
-                              Eigen::MatrixX3d* grad) const {
-  ResidualSum sum(Q, scale, grad);
-  double energy = 0;
+void VolumeEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
+                                 ResidualSum* sum) const {
   for (Eigen::Index t = 0; t < T_.rows(); ++t)
-    energy += sum.add<1, 4>(VolumeResidual(rest_volume_[t], edge_scale_[t]),
-                            {T_(t, 0), T_(t, 1), T_(t, 2), T_(t, 3)});
-  sum.finish();
-  return energy;
+    sum->add<1, 4>(VolumeResidual(rest_volume_[t], edge_scale_[t]),
+                   {T_(t, 0), T_(t, 1), T_(t, 2), T_(t, 3)});
 }
 
 void VolumeEnergy::add_preconditioner(double scale, std::vector<Eigen::Triplet<double>>* H) const {

@@ -7,8 +7,6 @@
 // minimises it.
 #pragma once
 
-#include <ceres/autodiff_cost_function.h>
-
 #include <Eigen/Core>
 
 #include "energies/energy_term.h"
@@ -32,10 +30,6 @@ struct VolumeResidual {
     r[0] = T(l) * (volume / T(v0) - T(1.0));
     return true;
   }
-  static ceres::CostFunction* Create(double rest_volume, double edge_scale) {
-    return new ceres::AutoDiffCostFunction<VolumeResidual, 1, 3, 3, 3, 3>(
-        new VolumeResidual(rest_volume, edge_scale));
-  }
   double v0, l;
 };
 
@@ -44,8 +38,8 @@ class VolumeEnergy : public EnergyTerm {
   /// @param rest rest positions; T tetrahedra with non-zero rest volume
   VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i& T, double weight);
   std::string name() const override { return "volume"; }
-  double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
-                  Eigen::MatrixX3d* grad) const override;
+  void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                     ResidualSum* sum) const override;
   /// The Gauss-Newton Hessian at the rest shape, 2 sum_t (l_t / V0_t)^2 g_t g_t^T
   /// (g_t = dV_t/dQ), averaged over the three coordinates.
   void add_preconditioner(double scale, std::vector<Eigen::Triplet<double>>* H) const override;

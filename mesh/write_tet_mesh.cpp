@@ -4,15 +4,11 @@
 #include <ostream>
 
 #include "core/atomic_file.h"
+#include "core/ends_with.h"
 #include "core/errors.h"
 
 namespace unfold {
 namespace {
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 void write_fields(std::ostream& out, const char* tag,
                   const std::vector<std::pair<std::string, Eigen::VectorXd>>& fields) {

@@ -15,10 +15,11 @@
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
 #include "pipeline/unfold_components.h"
-#include "solvers/ceres_backend.h"
+#include "solvers/beta_schedule.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
+#include "solvers/make_backend.h"
 #include "solvers/place_interior.h"
 
 namespace unfold {
@@ -73,10 +74,7 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
 void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
                    UnfoldResult* out) {
   UnfoldResult& result = *out;
-  UnfoldProblem problem;
-  problem.graph = &graph;
-  problem.rest = mesh.V;
-  problem.terms = make_energy_terms(mesh, graph, options.energy);
+  const UnfoldProblem problem = make_unfold_problem(mesh, graph, options.energy);
   const int n = graph.num_vertices;
   // The solver is decided once here (it needs a symbolic analysis), for
   // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
@@ -95,15 +93,13 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
   } else {
     result.lambda2 = fiedler_value(L);
   }
+  const BetaStart beta = starting_beta(options.beta_mode, options.beta_value,
+                                       options.raise_beta_to_bound, n, result.lambda2);
+  result.beta_requested = beta.requested;
+  result.beta_start = beta.start;
+  result.beta_raised = beta.raised;
   const double bound = n / result.lambda2;
-  result.beta_requested =
-      options.beta_mode == "relative" ? options.beta_value * bound : options.beta_value;
-  result.beta_start = result.beta_requested;
-  // (beta + 1) lambda_2 > n keeps the energy bounded (docs/method.md); 1% above
-  // the bound leaves room for the error in lambda_2.
-  if (options.raise_beta_to_bound && result.beta_start <= bound - 1) {
-    result.beta_start = 1.01 * bound - 1;
-    result.beta_raised = true;
+  if (beta.raised) {
     result.warnings.push_back("beta " + std::to_string(result.beta_requested) +
                               " is below the bound n/lambda_2 - 1 = " + std::to_string(bound - 1) +
                               ": raised to " + std::to_string(result.beta_start));
@@ -114,17 +110,15 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
             << ", method " << options.method;
   CascadeOptions cascade = options.cascade;
   cascade.beta = result.beta_start;
-  int iterations_per_cascade = options.cascade.k_iter;
-  if (options.method == "ceres" || options.method == "dpmu") {
+  const std::unique_ptr<CascadeBackend> backend =
+      make_backend({options.method, solver, options.ceres}, problem, amg);
+  result.cascade = run_cascade(problem, *backend, cascade);
+  const auto* local_global = dynamic_cast<const LocalGlobalBackend*>(backend.get());
+  if (!local_global) {
     result.linear_solver = "ceres";
-    CeresBackend backend(problem, options.ceres);
-    iterations_per_cascade = options.ceres.max_num_iterations;
-    result.cascade = run_cascade(problem, backend, cascade, iterations_per_cascade);
     return;
   }
-  LocalGlobalBackend local_global(problem, solver, amg);
-  result.cascade = run_cascade(problem, local_global, cascade, iterations_per_cascade);
-  result.cg = local_global.data().cg_stats;
+  result.cg = local_global->data().cg_stats;
   if (result.cg.unconverged_solves > 0)
     result.warnings.push_back(
         std::to_string(result.cg.unconverged_solves) + " of " + std::to_string(result.cg.solves) +

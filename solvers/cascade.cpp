@@ -8,13 +8,13 @@
 namespace unfold {
 
 CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
-                          const CascadeOptions& options, int iterations_per_cascade) {
+                          const CascadeOptions& options) {
   CascadeResult result;
   Eigen::MatrixX3d Q = problem.rest;
   const Rotations identity(size_t(problem.num_vertices()), Eigen::Matrix3d::Identity());
   double beta = options.beta;
   double energy = total_energy(problem, Q, identity, beta);  // f_s of Algorithm 1
-  const StageOptions stage{iterations_per_cascade, options.epsilon, options.edge_ratio_band,
+  const StageOptions stage{options.k_iter, options.epsilon, options.edge_ratio_band,
                            options.break_in_band, options.anderson};
   for (int cascade = 1; cascade <= options.num_cascades; ++cascade) {
     if (cascade > 1) beta *= options.growth;

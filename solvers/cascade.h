@@ -74,10 +74,10 @@ struct CascadeResult {
   std::vector<IterationRecord> history;
 };
 
-/// Runs Algorithm 1 from Q = P with the given backend.
-/// @param iterations_per_cascade the backend's iteration limit per cascade
+/// Runs Algorithm 1 from Q = P with the given backend (at most options.k_iter
+/// iterations per cascade for backends that count them).
 /// @throws NumericalError if the backend fails or a non-finite position appears
 CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
-                          const CascadeOptions& options, int iterations_per_cascade);
+                          const CascadeOptions& options);
 
 }  // namespace unfold

@@ -7,7 +7,7 @@
 #include "core/errors.h"
 #include "geometry/row_major.h"
 #include "metrics/edge_ratio.h"
-#include "solvers/local_global.h"
+#include "solvers/quadratic_part.h"
 
 namespace unfold {
 namespace {
@@ -20,29 +20,20 @@ Eigen::MatrixX3d positions(const Factor& factor, const double* z, int n) {
   return factor.permutationPinv() * factor.matrixU().solve(Z);
 }
 
+// What Ceres minimises: CeresBackend::objective.
 class UnfoldFunction : public ceres::FirstOrderFunction {
  public:
-  UnfoldFunction(const UnfoldProblem& problem, double beta, const Factor& factor)
-      : problem_(problem), beta_(beta), factor_(factor) {}
+  UnfoldFunction(const CeresBackend& backend, int num_parameters)
+      : backend_(backend), num_parameters_(num_parameters) {}
   bool Evaluate(const double* z, double* cost, double* gradient) const override {
-    const int n = problem_.num_vertices();
-    const Eigen::MatrixX3d Q = positions(factor_, z, n);
-    Rotations R;
-    fit_rotations(problem_, Q, beta_, &R);
-    Eigen::MatrixX3d grad;
-    *cost = total_energy(problem_, Q, R, beta_, gradient ? &grad : nullptr);
-    // dE/dz = L^-1 P dE/dQ.
-    if (gradient)
-      Eigen::Map<RowMatrixX3d>(gradient, n, 3) =
-          factor_.matrixL().solve(factor_.permutationP() * grad);
+    *cost = backend_.objective(z, gradient);
     return std::isfinite(*cost);
   }
-  int NumParameters() const override { return 3 * problem_.num_vertices(); }
+  int NumParameters() const override { return num_parameters_; }
 
  private:
-  const UnfoldProblem& problem_;
-  double beta_;
-  const Factor& factor_;
+  const CeresBackend& backend_;
+  int num_parameters_;
 };
 
 // Records each iteration (energy and edge ratio) in the cascade's history.
@@ -113,11 +104,25 @@ void CeresBackend::set_beta(double beta) {
                          std::to_string(beta));
 }
 
+double CeresBackend::objective(const double* z, double* gradient) const {
+  const int n = problem_.num_vertices();
+  const Eigen::MatrixX3d Q = positions(preconditioner_, z, n);
+  Rotations R;
+  fit_rotations(problem_, Q, beta_, &R);
+  Eigen::MatrixX3d grad;
+  const double cost = total_energy(problem_, Q, R, beta_, gradient ? &grad : nullptr);
+  // dE/dz = L^-1 P dE/dQ.
+  if (gradient)
+    Eigen::Map<RowMatrixX3d>(gradient, n, 3) =
+        preconditioner_.matrixL().solve(preconditioner_.permutationP() * grad);
+  return cost;
+}
+
 bool CeresBackend::run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,
                              double* previous_energy, std::vector<IterationRecord>* history) {
   const Factor& factor = preconditioner_;
   RowMatrixX3d z = factor.matrixU() * (factor.permutationP() * *Q);
-  ceres::GradientProblem gradient_problem(new UnfoldFunction(problem_, beta_, factor));
+  ceres::GradientProblem gradient_problem(new UnfoldFunction(*this, 3 * problem_.num_vertices()));
   ceres::GradientProblemSolver::Options solver_options;
   std::string name = options_.line_search_direction_type;
   ceres::StringToLineSearchDirectionType(name, &solver_options.line_search_direction_type);

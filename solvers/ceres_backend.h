@@ -40,6 +40,7 @@ void validate_ceres_options(const CeresOptions& options);
 class CeresBackend : public CascadeBackend {
  public:
   /// @param problem kept by reference, must outlive the backend
+  /// @throws UsageError for bad options
   CeresBackend(const UnfoldProblem& problem, const CeresOptions& options);
   void set_beta(double beta) override;
   bool bounded() const override { return bounded_; }
@@ -48,6 +49,10 @@ class CeresBackend : public CascadeBackend {
   /// the edge-ratio band once: a cascade is one converged Ceres solve.
   bool run_stage(const StageOptions& options, int cascade, Eigen::MatrixX3d* Q,
                  double* previous_energy, std::vector<IterationRecord>* history) override;
+  /// The function Ceres minimises at the current beta, over the preconditioned
+  /// variables z (3n doubles, row-major n x 3; Q = P^T L^-T z): min_R E(Q; R),
+  /// and with gradient (3n doubles) its gradient in z.
+  double objective(const double* z, double* gradient) const;
 
  private:
   const UnfoldProblem& problem_;

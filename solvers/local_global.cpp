@@ -9,52 +9,13 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "energies/quadratic_term.h"
+#include "energies/rotation_term.h"
 #include "metrics/edge_ratio.h"
 #include "solvers/anderson_acceleration.h"
+#include "solvers/backend_support.h"
 
 namespace unfold {
-namespace {
-
-// A_fixed and A_beta: the sums of weight * H (the growth Hessian: H for the
-// quadratic terms local-global accepts) over the terms that do not / do scale
-// with beta, on the union pattern of all terms (explicit zeros kept, so that
-// A = A_fixed + beta A_beta keeps one pattern). The triplets are gathered once
-// into one reserved buffer: at 10^5 vertices they are ~10^7, and growing such
-// vectors by reallocation cost more than the assembly itself.
-void assemble(const UnfoldProblem& problem, Eigen::SparseMatrix<double>* A_fixed,
-              Eigen::SparseMatrix<double>* A_beta) {
-  const int n = problem.num_vertices();
-  std::vector<Eigen::Triplet<double>> all;
-  all.reserve(size_t(n) + 6 * size_t(problem.graph->num_edges()));
-  std::vector<std::pair<size_t, bool>> term_ends;  // end of each term's triplets, scaled?
-  for (const auto& term : problem.terms) {
-    term->add_growth_hessian(term->weight(1.0), &all);
-    term_ends.emplace_back(all.size(), term->scales_with_beta());
-  }
-  std::vector<Eigen::Triplet<double>> part(all.size());
-  for (const bool scaled : {false, true}) {
-    size_t k = 0;
-    for (const auto& [end, term_scaled] : term_ends)
-      for (; k < end; ++k)
-        part[k] = Eigen::Triplet<double>(all[k].row(), all[k].col(),
-                                         term_scaled == scaled ? all[k].value() : 0.0);
-    Eigen::SparseMatrix<double>& A = scaled ? *A_beta : *A_fixed;
-    A.resize(n, n);
-    A.setFromTriplets(part.begin(), part.end());
-  }
-}
-
-void assemble_quadratic_part(const UnfoldProblem& problem, LocalGlobalData* data) {
-  data->problem = &problem;
-  assemble(problem, &data->A_fixed, &data->A_beta);
-  data->A = data->A_fixed;
-  data->A.makeCompressed();
-  data->rhs.resize(problem.num_vertices(), 3);
-  data->beta = 0;
-}
-
-}  // namespace
-
 bool use_iterative_solver(const LinearSolverOptions& options,
                           const Eigen::SparseMatrix<double>& A) {
   if (options.method != "auto") return options.method == "iterative";
@@ -79,32 +40,30 @@ void validate_linear_solver_options(const LinearSolverOptions& o) {
 void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data,
                                  const LinearSolverOptions& options,
                                  std::shared_ptr<const AmgData> amg) {
-  for (const auto& term : problem.terms)
-    if (!term->quadratic())
-      throw UsageError("the " + term->name() +
-                       " term is not quadratic: the local_global method cannot minimise it "
-                       "(use method: ceres)");
+  const std::string refused = why_backend_cannot_run("local_global", problem.terms);
+  if (!refused.empty()) throw UsageError(refused);
   data->cg = CgOptions{options.cg_tolerance, options.cg_forcing, options.cg_max_iterations};
-  assemble_quadratic_part(problem, data);
+  data->problem = &problem;
+  data->part = assemble_quadratic_part(problem);
+  data->A = data->part.A_fixed;
+  data->A.makeCompressed();
+  data->rhs.resize(problem.num_vertices(), 3);
+  data->beta = 0;
+  data->rotation_terms.clear();
+  for (const auto& term : problem.terms)
+    if (dynamic_cast<const RotationTerm*>(term.get()))
+      data->rotation_terms.push_back(static_cast<const QuadraticTerm*>(term.get()));
   data->iterative = use_iterative_solver(options, data->A);
   if (!data->iterative) {
     data->ldlt.analyze(data->A);
   } else {
     if (!amg) {
       auto own = std::make_shared<AmgData>();
-      amg_precomputation(data->A_beta, AmgOptions{}, own.get());
+      amg_precomputation(data->part.A_beta, AmgOptions{}, own.get());
       amg = std::move(own);
     }
     data->amg = std::move(amg);
   }
-}
-
-bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
-  LocalGlobalData data;
-  assemble_quadratic_part(problem, &data);
-  data.ldlt.analyze(data.A);
-  local_global_set_beta(beta, &data);
-  return energy_bounded(data);
 }
 
 void local_global_set_beta(double beta, LocalGlobalData* data) {
@@ -113,8 +72,10 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
   const auto values = [](Eigen::SparseMatrix<double>& M) {
     return Eigen::Map<Eigen::VectorXd>(M.valuePtr(), M.nonZeros());
   };
-  values(data->A) = values(data->A_fixed) + beta * values(data->A_beta);
+  values(data->A) = values(data->part.A_fixed) + beta * values(data->part.A_beta);
   data->beta = beta;
+  data->B_free = data->part.B_fixed + beta * data->part.B_beta;
+  data->c_free = data->part.c_fixed + beta * data->part.c_beta;
   if (data->iterative) {
     data->cg_stats.negative_curvature = false;
     return;
@@ -130,8 +91,8 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
 }
 
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q) {
-  data.rhs.setZero();
-  for (const auto& term : data.problem->terms)
+  data.rhs = data.B_free;
+  for (const QuadraticTerm* term : data.rotation_terms)
     term->add_linear(R, term->weight(data.beta), &data.rhs);
   if (data.iterative) {
     data.rhs_rows = data.rhs;
@@ -154,8 +115,8 @@ void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX
 
 double energy_after_global_step(const LocalGlobalData& data, const Rotations& R,
                                 const Eigen::MatrixX3d& Q) {
-  double energy = 0;
-  for (const auto& term : data.problem->terms)
+  double energy = data.c_free;
+  for (const QuadraticTerm* term : data.rotation_terms)
     energy += term->weight(data.beta) * term->constant(R);
   energy -= (Q.array() * data.rhs.array()).sum();
   if (data.iterative) {

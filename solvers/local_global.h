@@ -3,11 +3,10 @@
 // per-beta numeric factorization, and cheap iterations that reuse it
 // (optionally Anderson-accelerated, CascadeOptions::anderson).
 //
-// With the rotations fixed, every quadratic term t contributes
-// w_t(beta) (tr(Q^T H_t Q) - 2 tr(Q^T B_t(R))), so the global step solves
-//   A(beta) Q = sum_t w_t(beta) B_t(R),   A(beta) = sum_t w_t(beta) H_t,
-// on zero-mean Q. For the paper's energy A = 2((beta+1) L - n I) (docs/method.md).
-// Non-quadratic terms (volume) are refused: use the Ceres backend.
+// With the rotations fixed the global step solves A(beta) Q = B(R) on zero-mean
+// Q (solvers/quadratic_part.h); for the paper's energy A = 2((beta+1) L - n I)
+// (docs/method.md). Terms that are not quadratic (volume, edge lengths) are
+// refused (solvers/backend_support.h): use the Ceres backend.
 //
 // Two ways to solve it (docs/performance.md): a sparse LDL^T, exact and fastest
 // up to a few ten thousand vertices, and conjugate gradients preconditioned by
@@ -19,9 +18,12 @@
 #include <Eigen/SparseCore>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "energies/quadratic_term.h"
 #include "solvers/cascade.h"
 #include "solvers/projected_cg.h"
+#include "solvers/quadratic_part.h"
 #include "solvers/smoothed_aggregation.h"
 #include "solvers/sparse_ldlt.h"
 #include "solvers/unfold_problem.h"
@@ -57,11 +59,13 @@ struct CgStats {
 
 struct LocalGlobalData {
   const UnfoldProblem* problem = nullptr;
-  Eigen::SparseMatrix<double> A_fixed;    ///< sum of w_t H_t over terms not scaled by beta
-  Eigen::SparseMatrix<double> A_beta;     ///< the same at beta = 1 over terms scaled by beta
-  Eigen::SparseMatrix<double> A;          ///< A_fixed + beta A_beta: one pattern, refilled per beta
-  double beta = 0;                        ///< beta of the current matrix
-  bool iterative = false;                 ///< CG with `amg`, else `ldlt`
+  QuadraticPart part;             ///< A_fixed, A_beta, and B and c of terms free of R
+  Eigen::SparseMatrix<double> A;  ///< A_fixed + beta A_beta: one pattern, refilled per beta
+  double beta = 0;                ///< beta of the current matrix
+  Eigen::MatrixX3d B_free;        ///< B_fixed + beta B_beta: the terms free of R
+  double c_free = 0;              ///< c_fixed + beta c_beta
+  std::vector<const QuadraticTerm*> rotation_terms;  ///< the terms whose B and c depend on R
+  bool iterative = false;                            ///< CG with `amg`, else `ldlt`
   int negative_pivots = 0;                ///< direct: inertia of A, 1 iff the energy is bounded
   SparseLdlt ldlt;                        ///< direct: analyzed once, factorized per beta
   std::shared_ptr<const AmgData> amg;     ///< iterative: AMG hierarchy of A_beta, built once
@@ -77,7 +81,7 @@ struct LocalGlobalData {
 /// when given, e.g. the one that served lambda_2, must be built from a
 /// multiple of A_beta).
 /// @param problem kept by pointer, must outlive data
-/// @throws UsageError if a term is not quadratic (e.g. volume)
+/// @throws UsageError if a term is not quadratic (e.g. volume; why_backend_cannot_run)
 void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* data,
                                  const LinearSolverOptions& options = {},
                                  std::shared_ptr<const AmgData> amg = nullptr);
@@ -94,10 +98,6 @@ void local_global_set_beta(double beta, LocalGlobalData* data);
 inline bool energy_bounded(const LocalGlobalData& data) {
   return data.iterative ? !data.cg_stats.negative_curvature : data.negative_pivots <= 1;
 }
-
-/// Whether the quadratic terms at beta are bounded below off the constant
-/// vector (one LDL^T factorization; non-quadratic terms are ignored).
-bool quadratic_part_bounded(const UnfoldProblem& problem, double beta);
 
 /// Global step: the zero-mean minimiser over Q for fixed rotations R (iterative:
 /// to cg_tolerance, from *Q). No allocation once Q has n rows; uses data's

@@ -1,18 +1,25 @@
 #include "solvers/unfold_problem.h"
 
 #include "core/parallel.h"
+#include "energies/rotation_term.h"
 #include "geometry/best_rotation.h"
 
 namespace unfold {
+
+UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
+                                  const EnergyOptions& options) {
+  UnfoldProblem problem;
+  problem.graph = std::make_shared<const EdgeGraph>(std::move(graph));
+  problem.rest = mesh.V;
+  problem.terms = make_energy_terms(mesh, problem.graph, options);
+  return problem;
+}
 
 double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, const Rotations& R,
                     double beta, Eigen::MatrixX3d* grad) {
   if (grad) grad->setZero(problem.num_vertices(), 3);
   double energy = 0;
-  for (const auto& term : problem.terms) {
-    const double w = term->weight(beta);
-    energy += w * term->evaluate(Q, R, w, grad);
-  }
+  for (const auto& term : problem.terms) energy += term->evaluate(Q, R, term->weight(beta), grad);
   return energy;
 }
 
@@ -26,8 +33,8 @@ void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, doub
   for (int i = 0; i < n; ++i) S[size_t(i)].setZero();
   bool any = false;
   for (const auto& term : problem.terms)
-    if (term->uses_rotations()) {
-      term->add_rotation_covariance(Q, term->weight(beta), &S);
+    if (const auto* rotation_term = dynamic_cast<const RotationTerm*>(term.get())) {
+      rotation_term->add_rotation_covariance(Q, term->weight(beta), &S);
       any = true;
     }
   // The rotations of the previous call, when there are n of them, are

@@ -1,22 +1,31 @@
 // The problem every solver minimises: the tet mesh's edge graph, the rest
-// positions and the energy terms. Solvers see terms only through this.
+// positions and the energy terms. Solvers see terms only through this and the
+// terms' capability interfaces (energies/energy_term.h).
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 
 #include "energies/energy_terms.h"
-#include "mesh/edge_graph.h"
 #include "geometry/rotations.h"
+#include "mesh/edge_graph.h"
+#include "mesh/tet_mesh.h"
 
 namespace unfold {
 
 struct UnfoldProblem {
-  const EdgeGraph* graph = nullptr;
+  std::shared_ptr<const EdgeGraph> graph;  ///< shared with the terms that read it
   Eigen::MatrixX3d rest;
   EnergyTerms terms;
   int num_vertices() const { return graph->num_vertices; }
 };
+
+/// The problem of the terms `options` enable on `mesh`, owning its graph.
+/// @param graph the edge graph of mesh (of its surface when mesh.T is empty)
+/// @throws as make_energy_terms
+UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
+                                  const EnergyOptions& options);
 
 /// E(Q; R) = sum_t w_t(beta) e_t(Q; R); with grad, its gradient at fixed R
 /// (grad is resized to n x 3). At the optimal R (fit_rotations) this is also
@@ -24,8 +33,8 @@ struct UnfoldProblem {
 double total_energy(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, const Rotations& R,
                     double beta, Eigen::MatrixX3d* grad = nullptr);
 
-/// The local step: per vertex, the rotation minimising the rotation-dependent
-/// terms at beta (their weighted cell covariances summed), in parallel over
+/// The local step: per vertex, the rotation minimising the rotation terms
+/// (energies/rotation_term.h) at beta (their weighted cell covariances summed), in parallel over
 /// vertices. When R holds n rotations already (the previous iteration's), they
 /// are refined from (best_rotation with a guess); the result is the same to ~1e-12.
 /// @param covariances optional buffer for the n cell covariances, so that

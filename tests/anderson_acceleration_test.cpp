@@ -61,8 +61,9 @@ CascadeResult one_cascade(const BentBar& f, int anderson, int iterations) {
   options.epsilon = 0;                 // no convergence stop
   options.edge_ratio_band = {-1, -1};  // nor a band stop
   options.anderson = anderson;
+  options.k_iter = iterations;
   LocalGlobalBackend backend(f.problem);
-  return run_cascade(f.problem, backend, options, iterations);
+  return run_cascade(f.problem, backend, options);
 }
 
 TEST(AndersonAcceleration, LowersTheLocalGlobalEnergyFasterAndMonotonically) {

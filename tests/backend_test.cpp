@@ -11,7 +11,9 @@
 #include "pipeline/compare_configs.h"
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
+#include "solvers/make_backend.h"
 #include "test_meshes.h"
+#include "test_problem.h"
 
 namespace unfold {
 namespace {
@@ -59,7 +61,8 @@ TEST(BackendCascade, CeresUnfoldsWithEnergyPerCascade) {
 TEST(BackendUserControl, PairsReachTheirTargetsAndRigidityHolds) {
   // configs/demo_pairs.csv: front feet and hind feet side by side.
   const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(0));
-  const UnfoldResult free = unfold_surface(shape, Options{});
+  const Options defaults;
+  const UnfoldResult free = unfold_surface(shape, defaults);
   const Options options = load_options(kConfigs + "user_control.yaml");
   const UnfoldResult held = unfold_surface(shape, options);
   const struct {
@@ -92,7 +95,8 @@ TEST(BackendVolume, NoInvertedTetrahedraOnWolf0) {
   const std::string path = test::shared_data("tosca/wolf0.off");
   if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/wolf0.off";
   const SurfaceMesh wolf = read_surface_mesh(path);
-  const UnfoldResult plain = unfold_surface(wolf, Options{});
+  const Options defaults;
+  const UnfoldResult plain = unfold_surface(wolf, defaults);
   const UnfoldResult held = unfold_surface(wolf, load_options(kConfigs + "volume.yaml"));
   EXPECT_GT(plain.metrics.inverted_tets, 0) << "nothing for the volume term to fix";
   EXPECT_EQ(held.metrics.inverted_tets, 0);
@@ -101,6 +105,22 @@ TEST(BackendVolume, NoInvertedTetrahedraOnWolf0) {
 
 TEST(BackendVolume, RefusedByLocalGlobal) {
   EXPECT_THROW(load_options("", {{"volume.weight", "1"}}), UsageError);
+  EXPECT_NO_THROW(load_options("", {{"volume.weight", "1"}, {"method", "ceres"}}));
+}
+
+TEST(BackendSupport, LocalGlobalRefusesANonQuadraticTermByName) {
+  EnergyOptions energy;
+  energy.volume_weight = 1;
+  const test::ProblemFixture f(test::grid_tet_mesh(2, 1, 1), energy);
+  BackendOptions options;
+  try {
+    make_backend(options, f.problem);
+    FAIL() << "local_global accepted the volume term";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("volume"), std::string::npos) << e.what();
+  }
+  options.method = "ceres";
+  EXPECT_NE(make_backend(options, f.problem), nullptr);
 }
 
 }  // namespace

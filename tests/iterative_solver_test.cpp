@@ -209,7 +209,7 @@ CascadeResult cascade_with(const BentBar& f, const LinearSolverOptions& solver) 
   options.beta = 1.5 * f.n / f.lambda2;
   LocalGlobalBackend backend(f.problem, solver);
   EXPECT_EQ(backend.data().iterative, solver.method == "iterative");
-  return run_cascade(f.problem, backend, options, options.k_iter);
+  return run_cascade(f.problem, backend, options);
 }
 
 TEST(IterativeCascade, EndsWhereTheDirectSolverEnds) {
@@ -240,7 +240,8 @@ TEST(IterativeCascade, AgreesWithTheDirectSolverForOtherTerms) {
   UserPair ends;
   ends.j = with_pairs.n - 1;  // the bar's far corner
   ends.t = Eigen::Vector3d(-12, 0, 0);
-  with_pairs.problem.terms.push_back(std::make_unique<UserPairsEnergy>(std::vector{ends}, 1.0));
+  with_pairs.problem.terms.push_back(
+      std::make_unique<UserPairsEnergy>(std::vector{ends}, with_pairs.n, 1.0));
   with_pairs.lambda2 = fiedler_value(beta_laplacian(with_pairs.problem));
   const BentBar cotangent_bar(cotangent);
   for (const BentBar* f : std::initializer_list<const BentBar*>{&with_pairs, &cotangent_bar}) {

@@ -224,7 +224,7 @@ TEST(NumericalGuard, NanInAnIterationIsAnErrorNamingIt) {
   options.beta = 100;
   EXPECT_TRUE(Contains(test::error_message<NumericalError>([&] {
                          LocalGlobalBackend backend(f.problem);
-                         run_cascade(f.problem, backend, options, options.k_iter);
+                         run_cascade(f.problem, backend, options);
                        }),
                        "non-finite positions at iteration 1 (cascade 1"));
 }

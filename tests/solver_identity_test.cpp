@@ -77,7 +77,7 @@ void expect_same_as_reference(const SurfaceMesh& surface) {
   const int threads = omp_get_max_threads();
   omp_set_num_threads(2);
   LocalGlobalBackend backend(f.problem);
-  const CascadeResult result = run_cascade(f.problem, backend, options, options.k_iter);
+  const CascadeResult result = run_cascade(f.problem, backend, options);
   omp_set_num_threads(threads);
   ASSERT_GT(result.iterations, 1);
   const Eigen::MatrixX3d Q = reference_iterations(g, tets.V, result.history);

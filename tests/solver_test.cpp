@@ -145,7 +145,7 @@ TEST(SolverCascade, EnergyNeverIncreasesWithinACascade) {
   options.beta = 1.5 * f.n / f.lambda2;
   options.edge_ratio_band = {-1, -1};  // run every cascade to its end
   LocalGlobalBackend backend(f.problem);
-  const CascadeResult result = run_cascade(f.problem, backend, options, options.k_iter);
+  const CascadeResult result = run_cascade(f.problem, backend, options);
   ASSERT_GT(result.iterations, 4);
   test::expect_energy_non_increasing_within_cascades(result);
 }
@@ -158,7 +158,7 @@ TEST(SolverCascade, BreakInBandStopsAtTheFirstIterateInsideElseTheCascadeFinishe
   options.edge_ratio_band = {-1, -1};
   const auto run = [&] {  // a fresh backend: the local step warm-starts from its rotations
     LocalGlobalBackend backend(f.problem);
-    return run_cascade(f.problem, backend, options, options.k_iter);
+    return run_cascade(f.problem, backend, options);
   };
   const CascadeResult free = run();
   ASSERT_GT(free.history.size(), 3u);
@@ -185,7 +185,7 @@ TEST(SolverCascade, RigidInputStaysRigidAndSpreads) {
   CascadeOptions options;
   options.beta = 1.5 * f.n / f.lambda2;
   LocalGlobalBackend backend(f.problem);
-  const CascadeResult result = run_cascade(f.problem, backend, options, options.k_iter);
+  const CascadeResult result = run_cascade(f.problem, backend, options);
   EXPECT_TRUE(result.bounded);
   EXPECT_GT(result.edge_ratio, 0.95);
   EXPECT_LT(result.edge_ratio, 1.3);

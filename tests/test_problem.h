@@ -16,17 +16,15 @@ namespace unfold::test {
 
 struct ProblemFixture {
   TetMesh mesh;
-  std::unique_ptr<EdgeGraph> graph;  // the terms refer to it: keep its address fixed
   UnfoldProblem problem;
+  std::shared_ptr<const EdgeGraph> graph;  ///< the problem's
   int n = 0;
   double lambda2 = 0;
 
   explicit ProblemFixture(TetMesh tets, const EnergyOptions& energy = {})
       : mesh(std::move(tets)),
-        graph(std::make_unique<EdgeGraph>(build_edge_graph(int(mesh.V.rows()), mesh.T))) {
-    problem.graph = graph.get();
-    problem.rest = mesh.V;
-    problem.terms = make_energy_terms(mesh, *graph, energy);
+        problem(make_unfold_problem(mesh, build_edge_graph(int(mesh.V.rows()), mesh.T), energy)),
+        graph(problem.graph) {
     n = int(mesh.V.rows());
     lambda2 = fiedler_value(beta_laplacian(problem));
   }
