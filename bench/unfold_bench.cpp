@@ -16,7 +16,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
 
+#include "energies/quadratic_term.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/sort_interior_vertices.h"
@@ -186,6 +188,45 @@ void BM_LocalStep(benchmark::State& state) {
   for (auto _ : state) fit_rotations(m.problem, s.Q, m.beta, &s.R, &s.covariances);
 }
 BENCHMARK(BM_LocalStep)->Unit(benchmark::kMillisecond);
+
+// ARAP's quadratic form by its hand-written closed forms (0) and as derived
+// from its residuals (1): the fast paths stay only while they are faster
+// (docs/method.md). B(R) is needed every global step, H once per mesh.
+const QuadraticTerm& arap_term(const BenchMesh& m) {
+  for (const auto& term : m.problem.terms)
+    if (term->name() == "arap") return dynamic_cast<const QuadraticTerm&>(*term);
+  throw std::logic_error("no arap term");
+}
+
+void BM_ArapLinear(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const QuadraticTerm& arap = arap_term(m);
+  SolverState s(m, LinearSolverOptions{});
+  Eigen::MatrixX3d B(m.problem.num_vertices(), 3);
+  for (auto _ : state) {
+    B.setZero();
+    if (state.range(0) == 0)
+      arap.add_linear(s.R, 1.0, &B);
+    else
+      arap.add_derived_linear(s.R, 1.0, &B);
+    benchmark::DoNotOptimize(B.data());
+  }
+}
+BENCHMARK(BM_ArapLinear)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_ArapHessian(benchmark::State& state) {
+  const QuadraticTerm& arap = arap_term(bench_mesh());
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (auto _ : state) {
+    triplets.clear();
+    if (state.range(0) == 0)
+      arap.add_hessian(1.0, &triplets);
+    else
+      arap.add_derived_hessian(1.0, &triplets);
+    benchmark::DoNotOptimize(triplets.data());
+  }
+}
+BENCHMARK(BM_ArapHessian)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // The iterative global step starts from the positions it replaces (warm
 // start), so it is timed on a copy of one fixed mid-cascade state.

@@ -1,5 +1,6 @@
 #include "solvers/quadratic_part.h"
 
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -63,8 +64,9 @@ bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
   try {
     ldlt.factorize(A);
   } catch (const NumericalError& e) {
-    throw NumericalError("factorizing the quadratic part failed at beta = " + std::to_string(beta) +
-                         ": " + e.what());
+    std::ostringstream what;
+    what << "factorizing the global matrix failed at beta = " << beta << ": " << e.what();
+    throw NumericalError(what.str());
   }
   return ldlt.negative_pivots() <= 1;
 }
