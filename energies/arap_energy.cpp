@@ -15,15 +15,18 @@ ArapEnergy::ArapEnergy(std::shared_ptr<const EdgeGraph> graph, const Eigen::Matr
       weights_(std::move(edge_weights)),
       cells_(cell_rest_edges(*graph_, rest, weights_)) {}
 
-void ArapEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& R,
-                               ResidualSum* sum) const {
+double ArapEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& R,
+                                 ResidualSum* sum) const {
   const EdgeGraph& g = *graph_;
+  double energy = 0;
   for (int i = 0; i < g.num_vertices; ++i)
     for (int k = g.offsets[size_t(i)]; k < g.offsets[size_t(i) + 1]; ++k) {
       const int j = g.neighbors[size_t(k)];
-      sum->add<3, 2>(DifferenceResidual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose()),
-                     {i, j}, weights_[size_t(g.neighbor_edge[size_t(k)])]);
+      energy += sum->add<3, 2>(
+          DifferenceResidual(R[size_t(i)] * (rest_.row(i) - rest_.row(j)).transpose()), {i, j},
+          weights_[size_t(g.neighbor_edge[size_t(k)])]);
     }
+  return energy;
 }
 
 void ArapEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const {

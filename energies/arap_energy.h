@@ -27,8 +27,8 @@ class ArapEnergy : public QuadraticTerm, public RotationTerm {
              std::vector<double> edge_weights, double weight);
   std::string name() const override { return "arap"; }
   /// w_ij |q_i - q_j - R_i (p_i - p_j)|^2 for every cell i and neighbour j.
-  void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
-                     ResidualSum* sum) const override;
+  double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                       ResidualSum* sum) const override;
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
   void add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const override;
   /// sum_i sum_j w_ij |p_i - p_j|^2: rotations keep lengths, so c does not depend on R.

@@ -11,11 +11,13 @@ EdgeLengthEnergy::EdgeLengthEnergy(std::shared_ptr<const EdgeGraph> graph,
     rest_length_[e] = (rest.row(graph_->edges(e, 0)) - rest.row(graph_->edges(e, 1))).norm();
 }
 
-void EdgeLengthEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
-                                     ResidualSum* sum) const {
+double EdgeLengthEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
+                                       ResidualSum* sum) const {
+  double energy = 0;
   for (int e = 0; e < graph_->num_edges(); ++e)
-    sum->add<1, 2>(EdgeLengthResidual(rest_length_[e]), {graph_->edges(e, 0), graph_->edges(e, 1)},
-                   2.0);
+    energy += sum->add<1, 2>(EdgeLengthResidual(rest_length_[e]),
+                             {graph_->edges(e, 0), graph_->edges(e, 1)}, 2.0);
+  return energy;
 }
 
 void EdgeLengthEnergy::add_growth_hessian(double scale,

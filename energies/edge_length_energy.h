@@ -36,8 +36,8 @@ class EdgeLengthEnergy : public EnergyTerm {
                    double weight);
   std::string name() const override { return "edge_length"; }
   /// @pre (gradients) no edge has zero length in Q: the length's gradient is undefined there
-  void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
-                     ResidualSum* sum) const override;
+  double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                       ResidualSum* sum) const override;
   /// 2 L: e_l's quadratic growth far from the rest shape.
   void add_growth_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
   /// 2 L as well: an upper bound of the Gauss-Newton Hessian near the rest shape.

@@ -7,8 +7,9 @@ namespace unfold {
 double EnergyTerm::evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
                             Eigen::MatrixX3d* grad) const {
   ResidualSum sum(Q, scale, grad);
-  add_residuals(Q, R, &sum);
-  return sum.finish();
+  const double value = add_residuals(Q, R, &sum);
+  sum.finish();
+  return scale * value;
 }
 
 }  // namespace unfold

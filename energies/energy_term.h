@@ -43,13 +43,13 @@ class EnergyTerm {
   double weight(double beta) const { return scales_with_beta_ ? weight_ * beta : weight_; }
   bool scales_with_beta() const { return scales_with_beta_; }
 
-  /// Adds every residual block of e_t at (Q, R) into sum (ResidualSum::add), so
-  /// that e_t(Q; R) = sum_b w_b |f_b|^2. The blocks' functors may depend on Q
-  /// itself only where that dependence has no first-order effect (the stretch
-  /// term's centroid).
+  /// Adds every residual block of e_t at (Q, R) into sum (ResidualSum::add) and
+  /// returns the sum of what add returned: e_t(Q; R) = sum_b w_b |f_b|^2. The
+  /// blocks' functors may depend on Q itself only where that dependence has no
+  /// first-order effect (the stretch term's centroid).
   /// @pre Q is n x 3 and R holds n rotations
-  virtual void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
-                             ResidualSum* sum) const = 0;
+  virtual double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                               ResidualSum* sum) const = 0;
 
   /// scale * e_t(Q; R); when grad is not null, adds scale * de_t/dQ (at fixed R)
   /// into it. From add_residuals.

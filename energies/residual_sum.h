@@ -24,8 +24,8 @@ namespace unfold {
 
 class ResidualSum {
  public:
-  /// Values; with grad (n x 3) also the gradient. finish() returns scale * e
-  /// and adds scale * de/dQ into *grad.
+  /// Values (what add returns); with grad (n x 3) also the gradient: finish()
+  /// adds scale * de/dQ into *grad.
   ResidualSum(const Eigen::MatrixX3d& Q, double scale, Eigen::MatrixX3d* grad)
       : q_(Q), scale_(scale), grad_(grad) {
     if (grad_) g_.setZero(Q.rows(), 3);
@@ -39,18 +39,28 @@ class ResidualSum {
   ResidualSum(const Eigen::MatrixX3d& Q, double scale, std::vector<Eigen::Triplet<double>>* hessian)
       : q_(Q), scale_(scale), hessian_(hessian) {}
 
-  /// Adds the block weight * |f(q_v0, ..., q_v(K-1))|^2 of R residuals on K vertices.
+  /// The block weight * |f(q_v0, ..., q_v(K-1))|^2 of R residuals on K vertices
+  /// (unscaled; the caller sums them: a running sum kept here would be stored
+  /// to memory at every block, as it might alias the positions).
   /// @param weight any sign (the stretch term subtracts)
   template <int R, int K, typename Functor>
-  void add(const Functor& f, const std::array<int, K>& vertices, double weight = 1.0);
+  double add(const Functor& f, const std::array<int, K>& vertices, double weight = 1.0) {
+    // The value alone is the hot path (energy sweeps): kept small, so that it inlines.
+    if (!grad_ && !hessian_) return weight * squared_norm<R, K>(f, vertices);
+    return weight * differentiate<R, K>(f, vertices, weight);
+  }
 
-  /// scale * e; adds the accumulated gradient into grad. Call once, after the last add.
-  double finish() {
+  /// Adds the accumulated gradient into grad. Call once, after the last add.
+  void finish() {
     if (grad_) *grad_ += g_;
-    return scale_ * value_;
   }
 
  private:
+  template <int R, int K, typename Functor>
+  double squared_norm(const Functor& f, const std::array<int, K>& vertices) const;
+  /// |f|^2, with its gradient or Gauss-Newton matrix accumulated (times weight).
+  template <int R, int K, typename Functor>
+  double differentiate(const Functor& f, const std::array<int, K>& vertices, double weight);
   template <int R, int K>
   void add_gauss_newton(const ceres::Jet<double, 3 * K> (&r)[R], const std::array<int, K>& vertices,
                         double weight);
@@ -58,7 +68,6 @@ class ResidualSum {
 
   RowMatrixX3d q_, g_;
   double scale_;
-  double value_ = 0;
   Eigen::MatrixX3d* grad_ = nullptr;
   std::vector<Eigen::Triplet<double>>* hessian_ = nullptr;
 };
@@ -72,16 +81,18 @@ void call_functor(const Functor& f, const std::array<const T*, sizeof...(I)>& x,
 }  // namespace internal
 
 template <int R, int K, typename Functor>
-void ResidualSum::add(const Functor& f, const std::array<int, K>& vertices, double weight) {
-  if (!grad_ && !hessian_) {
-    std::array<const double*, K> x;
-    for (size_t b = 0; b < size_t(K); ++b) x[b] = q_.row(vertices[b]).data();
-    double r[R], value = 0;
-    internal::call_functor(f, x, r, std::make_index_sequence<K>());
-    for (int k = 0; k < R; ++k) value += r[k] * r[k];
-    value_ += weight * value;
-    return;
-  }
+double ResidualSum::squared_norm(const Functor& f, const std::array<int, K>& vertices) const {
+  std::array<const double*, K> x;
+  for (size_t b = 0; b < size_t(K); ++b) x[b] = q_.row(vertices[b]).data();
+  double r[R], value = 0;
+  internal::call_functor(f, x, r, std::make_index_sequence<K>());
+  for (int k = 0; k < R; ++k) value += r[k] * r[k];
+  return value;
+}
+
+template <int R, int K, typename Functor>
+double ResidualSum::differentiate(const Functor& f, const std::array<int, K>& vertices,
+                                  double weight) {
   using Jet = ceres::Jet<double, 3 * K>;
   Jet storage[K][3], r[R];
   std::array<const Jet*, K> x;
@@ -92,7 +103,6 @@ void ResidualSum::add(const Functor& f, const std::array<int, K>& vertices, doub
   internal::call_functor(f, x, r, std::make_index_sequence<K>());
   double value = 0;
   for (int k = 0; k < R; ++k) value += r[k].a * r[k].a;
-  value_ += weight * value;
   if (grad_) {
     const double s = 2 * scale_ * weight;
     for (int k = 0; k < R; ++k)
@@ -100,6 +110,7 @@ void ResidualSum::add(const Functor& f, const std::array<int, K>& vertices, doub
         for (int d = 0; d < 3; ++d) g_(vertices[size_t(b)], d) += s * r[k].a * r[k].v[3 * b + d];
   }
   if (hessian_) add_gauss_newton<R, K>(r, vertices, weight);
+  return value;
 }
 
 template <int R, int K>

@@ -5,14 +5,16 @@
 
 namespace unfold {
 
-void StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& /*R*/,
-                                  ResidualSum* sum) const {
+double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& /*R*/,
+                                    ResidualSum* sum) const {
   const int n = graph_->num_vertices;
   const SpreadResidual spread(Q.colwise().mean().transpose());
-  for (int i = 0; i < n; ++i) sum->add<3, 1>(spread, {i}, -2.0 * n);
+  double energy = 0;
+  for (int i = 0; i < n; ++i) energy += sum->add<3, 1>(spread, {i}, -2.0 * n);
   const DifferenceResidual edge;
   for (int e = 0; e < graph_->num_edges(); ++e)
-    sum->add<3, 2>(edge, {graph_->edges(e, 0), graph_->edges(e, 1)}, 2.0);
+    energy += sum->add<3, 2>(edge, {graph_->edges(e, 0), graph_->edges(e, 1)}, 2.0);
+  return energy;
 }
 
 }  // namespace unfold

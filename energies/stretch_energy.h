@@ -34,8 +34,8 @@ class StretchEnergy : public QuadraticTerm {
   StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weight)
       : QuadraticTerm(graph->num_vertices, weight, false), graph_(std::move(graph)) {}
   std::string name() const override { return "stretch"; }
-  void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
-                     ResidualSum* sum) const override;
+  double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                       ResidualSum* sum) const override;
 
  private:
   std::shared_ptr<const EdgeGraph> graph_;

@@ -5,9 +5,11 @@
 
 namespace unfold {
 
-void UserPairsEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
-                                    ResidualSum* sum) const {
-  for (const UserPair& p : pairs_) sum->add<3, 2>(DifferenceResidual(p.t), {p.i, p.j});
+double UserPairsEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
+                                      ResidualSum* sum) const {
+  double energy = 0;
+  for (const UserPair& p : pairs_) energy += sum->add<3, 2>(DifferenceResidual(p.t), {p.i, p.j});
+  return energy;
 }
 
 }  // namespace unfold

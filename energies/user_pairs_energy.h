@@ -26,8 +26,8 @@ class UserPairsEnergy : public QuadraticTerm {
   UserPairsEnergy(std::vector<UserPair> pairs, int num_vertices, double gamma)
       : QuadraticTerm(num_vertices, gamma, true), pairs_(std::move(pairs)) {}
   std::string name() const override { return "user_pairs"; }
-  void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
-                     ResidualSum* sum) const override;
+  double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                       ResidualSum* sum) const override;
 
  private:
   std::vector<UserPair> pairs_;

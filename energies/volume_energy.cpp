@@ -21,11 +21,13 @@ VolumeEnergy::VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i&
   }
 }
 
-void VolumeEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
-                                 ResidualSum* sum) const {
+double VolumeEnergy::add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
+                                   ResidualSum* sum) const {
+  double energy = 0;
   for (Eigen::Index t = 0; t < T_.rows(); ++t)
-    sum->add<1, 4>(VolumeResidual(rest_volume_[t], edge_scale_[t]),
-                   {T_(t, 0), T_(t, 1), T_(t, 2), T_(t, 3)});
+    energy += sum->add<1, 4>(VolumeResidual(rest_volume_[t], edge_scale_[t]),
+                             {T_(t, 0), T_(t, 1), T_(t, 2), T_(t, 3)});
+  return energy;
 }
 
 void VolumeEnergy::add_preconditioner(double scale, std::vector<Eigen::Triplet<double>>* H) const {

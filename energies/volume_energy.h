@@ -38,8 +38,8 @@ class VolumeEnergy : public EnergyTerm {
   /// @param rest rest positions; T tetrahedra with non-zero rest volume
   VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i& T, double weight);
   std::string name() const override { return "volume"; }
-  void add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
-                     ResidualSum* sum) const override;
+  double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
+                       ResidualSum* sum) const override;
   /// The Gauss-Newton Hessian at the rest shape, 2 sum_t (l_t / V0_t)^2 g_t g_t^T
   /// (g_t = dV_t/dQ), averaged over the three coordinates.
   void add_preconditioner(double scale, std::vector<Eigen::Triplet<double>>* H) const override;

@@ -44,10 +44,12 @@ class MidpointAnchorEnergy : public QuadraticTerm {
   MidpointAnchorEnergy(std::vector<MidpointAnchor> anchors, int num_vertices, double weight)
       : QuadraticTerm(num_vertices, weight, true), anchors_(std::move(anchors)) {}
   std::string name() const override { return "midpoint_anchor"; }
-  void add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
-                     ResidualSum* sum) const override {
+  double add_residuals(const Eigen::MatrixX3d& /*Q*/, const Rotations& /*R*/,
+                       ResidualSum* sum) const override {
+    double energy = 0;
     for (const MidpointAnchor& a : anchors_)
-      sum->add<3, 3>(MidpointAnchorResidual(a.offset), {a.m, a.a, a.b});
+      energy += sum->add<3, 3>(MidpointAnchorResidual(a.offset), {a.m, a.a, a.b});
+    return energy;
   }
 
  private:

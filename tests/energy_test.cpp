@@ -187,8 +187,8 @@ class SquashedTerm : public QuadraticTerm {
  public:
   SquashedTerm() : QuadraticTerm(2, 1.0, true) {}
   std::string name() const override { return "squashed"; }
-  void add_residuals(const Eigen::MatrixX3d&, const Rotations&, ResidualSum* sum) const override {
-    sum->add<3, 2>(SquashedDifference(), {0, 1});
+  double add_residuals(const Eigen::MatrixX3d&, const Rotations&, ResidualSum* sum) const override {
+    return sum->add<3, 2>(SquashedDifference(), {0, 1});
   }
 };
 
