@@ -17,4 +17,13 @@ double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& 
   return energy;
 }
 
+void StretchEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const {
+  for (int i = 0; i < graph_->num_vertices; ++i)
+    H->emplace_back(i, i, scale * 2.0 * (graph_->degree(i) - graph_->num_vertices));
+  for (int e = 0; e < graph_->num_edges(); ++e) {
+    H->emplace_back(graph_->edges(e, 0), graph_->edges(e, 1), -2.0 * scale);
+    H->emplace_back(graph_->edges(e, 1), graph_->edges(e, 0), -2.0 * scale);
+  }
+}
+
 }  // namespace unfold
