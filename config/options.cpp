@@ -200,6 +200,11 @@ void validate_options(const Options& o) {
           "must be refuse or separately, got '" + o.components + "'");
   require(o.domain == "volume" || o.domain == "surface", "domain",
           "must be volume or surface, got '" + o.domain + "'");
+  require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
+  require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
+          "must be a finite number >= 0");
+  require(std::isfinite(o.integrate.tolerance) && o.integrate.tolerance >= 0, "integrate.tolerance",
+          "must be a finite number >= 0");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

@@ -10,6 +10,7 @@
 #include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
 #include "solvers/ceres_backend.h"
+#include "solvers/integrate_rotation_field.h"
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
 #include "tetra/tetrahedralize.h"
@@ -28,6 +29,7 @@ struct Options {
   bool raise_beta_to_bound = true;    ///< a starting beta below the bound is raised above it
   CascadeOptions cascade;             ///< cascade.beta is derived from beta_mode / beta_value
   LinearSolverOptions linear_solver;  ///< the global step's solver (method local_global)
+  IntegrateOptions integrate;         ///< after the cascade (pose invariance)
   EnergyOptions energy;
   CeresOptions ceres;
   LsmdsOptions lsmds;  ///< method: lsmds only

@@ -15,12 +15,13 @@
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
 #include "pipeline/unfold_components.h"
+#include "solvers/arap_solve.h"
 #include "solvers/beta_schedule.h"
 #include "solvers/fiedler_value.h"
+#include "solvers/integrate_rotation_field.h"
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
 #include "solvers/make_backend.h"
-#include "solvers/place_interior.h"
 
 namespace unfold {
 namespace {
@@ -142,8 +143,29 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, Unfold
   solve_cascade(surface_graph, surface, options, out);
   Eigen::MatrixX3d Q = result.tets.V.rowwise() - result.tets.V.colwise().mean();
   Q.topRows(surface.num_surface_vertices) = result.cascade.positions;
-  result.cascade.positions =
-      place_interior(tet_graph, result.tets.V, std::move(Q), surface.num_surface_vertices);
+  ArapSolveOptions place;
+  place.num_fixed = surface.num_surface_vertices;
+  result.cascade.positions = arap_solve(tet_graph, result.tets.V, std::move(Q), place);
+}
+
+// integrate: the cascade's rotation field integrated on the whole tet mesh
+// (docs/method.md, pose invariance). The anchor's unit is lambda_2 of the
+// surface's uniform graph Laplacian: it depends on the connectivity alone, so
+// it is the same for every pose of a shape (the tet mesh's is not).
+void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options,
+                                 UnfoldResult* out) {
+  UnfoldResult& result = *out;
+  const double lambda2 =
+      result.lambda2 > 0 && (options.domain == "surface" || result.tets.T.rows() == 0)
+          ? result.lambda2
+          : fiedler_value(graph_laplacian(build_edge_graph(
+                int(result.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)))));
+  CascadeResult& c = result.cascade;
+  c.positions =
+      integrate_rotation_field(graph, result.tets.V, c.positions, lambda2, options.integrate);
+  c.edge_ratio = edge_ratio(graph, result.tets.V, c.positions);
+  const auto& band = options.cascade.edge_ratio_band;
+  c.reached_band = c.edge_ratio >= band[0] && c.edge_ratio <= band[1];
 }
 
 // LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =
@@ -227,6 +249,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   } else {
     solve_cascade(graph, result.tets, options, &result);
   }
+  if (options.integrate.iterations > 0) integrate_cascade_rotations(graph, options, &result);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +

@@ -49,6 +49,29 @@ TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
   EXPECT_LT(after, 0.5 * before) << "poses " << before << " apart, canonical forms " << after;
 }
 
+// configs/invariant.yaml (a converged surface solve, its rotations integrated):
+// every pair of the demo shape's poses ends at most 0.3 times as far apart as
+// it started, with the input's local detail back (E_rig of the paper's order).
+TEST(PipelinePose, InvariantConfigGivesNearlyOneCanonicalForm) {
+  const Options invariant = load_options(UNFOLD_SOURCE_DIR "/configs/invariant.yaml");
+  std::vector<SurfaceMesh> poses;
+  std::vector<UnfoldResult> forms;
+  for (int pose = 0; pose < 3; ++pose) {
+    poses.push_back(make_articulated_shape(ShapePose::preset(pose)));
+    forms.push_back(unfold_surface(poses.back(), invariant));
+    EXPECT_LT(forms.back().metrics.E_rig, 0.7) << "pose " << pose;
+    EXPECT_EQ(forms.back().metrics.inverted_tets, 0) << "pose " << pose;
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int b = a + 1; b < 3; ++b) {
+      const double before = aligned_distance(poses[size_t(a)].V, poses[size_t(b)].V);
+      const double after =
+          aligned_distance(forms[size_t(a)].canonical.V, forms[size_t(b)].canonical.V);
+      EXPECT_LT(after, 0.3 * before)
+          << "poses " << a << ", " << b << ": " << before << " apart, canonical forms " << after;
+    }
+}
+
 TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {
   const SurfaceMesh a = make_articulated_shape(ShapePose::preset(0));
   Options surface;

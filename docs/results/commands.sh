@@ -13,10 +13,11 @@ for f in "$DATA"/tosca/*.off "$DATA"/faust/*.off; do ln -sf "$(realpath "$f")" "
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
   --configs configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml \
   --target_vertices 2000 --jobs 2
-# Ours at full resolution: the paper's method and the surface domain
-# (docs/method.md, pose invariance); pose pictures poses_<class>_<method>.png.
+# Ours at full resolution: the paper's method, the surface domain and the
+# integrated rotation field (docs/method.md, pose invariance); pose pictures
+# poses_<class>_<method>.png.
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" \
-  --configs configs/paper.yaml,configs/surface.yaml --jobs 2
+  --configs configs/paper.yaml,configs/surface.yaml,configs/invariant.yaml --jobs 2
 
 build/bin/unfold_report --runs "$OUT/2k,$OUT/full" --labels 2k,full \
   --markdown docs/results/report.md --plots_dir docs/results

@@ -1,6 +1,7 @@
-// The interior following the surface (domain: surface): rigid motions are
-// followed exactly, other deformations lower the ARAP energy, fixed rows stay.
-#include "solvers/place_interior.h"
+// ARAP with held vertices (the interior following the surface, domain: surface)
+// and an anchor: rigid motions are followed exactly, other deformations lower
+// the energy, held rows stay, a strong anchor keeps the start.
+#include "solvers/arap_solve.h"
 
 #include <gtest/gtest.h>
 
@@ -36,6 +37,12 @@ struct BoundaryFirstGrid {
   }
 };
 
+ArapSolveOptions held(int num_fixed) {
+  ArapSolveOptions options;
+  options.num_fixed = num_fixed;
+  return options;
+}
+
 double arap_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q) {
   Rotations R;
   best_rotations(graph, P, Q, &R);
@@ -49,7 +56,7 @@ double arap_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eige
   return e;
 }
 
-TEST(PlaceInterior, FollowsARigidMotionOfTheSurface) {
+TEST(ArapSolve, FollowsARigidMotionOfTheSurface) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
   const Eigen::Matrix3d R = test::random_rotation(7);
@@ -57,11 +64,11 @@ TEST(PlaceInterior, FollowsARigidMotionOfTheSurface) {
   const Eigen::MatrixX3d moved = (g.mesh.V * R.transpose()).rowwise() + t;
   Eigen::MatrixX3d start = moved;
   start.bottomRows(27) = g.mesh.V.bottomRows(27);  // interior left behind, unrotated
-  const Eigen::MatrixX3d Q = place_interior(graph, g.mesh.V, start, g.num_boundary);
+  const Eigen::MatrixX3d Q = arap_solve(graph, g.mesh.V, start, held(g.num_boundary));
   EXPECT_LT((Q - moved).cwiseAbs().maxCoeff(), 1e-6);
 }
 
-TEST(PlaceInterior, LowersTheArapEnergyAndKeepsTheFixedRows) {
+TEST(ArapSolve, LowersTheArapEnergyAndKeepsTheFixedRows) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
   // A twist about the z axis, growing with height.
@@ -73,19 +80,52 @@ TEST(PlaceInterior, LowersTheArapEnergyAndKeepsTheFixedRows) {
   }
   Eigen::MatrixX3d start = twisted;
   start.bottomRows(27) = g.mesh.V.bottomRows(27);
-  const Eigen::MatrixX3d Q = place_interior(graph, g.mesh.V, start, g.num_boundary);
+  const Eigen::MatrixX3d Q = arap_solve(graph, g.mesh.V, start, held(g.num_boundary));
   EXPECT_EQ(Q.topRows(g.num_boundary), twisted.topRows(g.num_boundary));
   EXPECT_LT(arap_energy(graph, g.mesh.V, Q), 0.5 * arap_energy(graph, g.mesh.V, start));
   // The twist itself is nearly as rigid as the surface allows: placement stays close to it.
   EXPECT_LT((Q - twisted).rowwise().norm().maxCoeff(), 0.1);
 }
 
-TEST(PlaceInterior, RefusesMismatchedSizesAndNothingFixed) {
+// The twisted grid with one vertex held: free, ARAP drifts back towards the
+// rest shape (its minimum); anchored, the steps stay near the start, the
+// stronger the anchor the nearer, and still lower the ARAP energy.
+TEST(ArapSolve, AnAnchorKeepsTheStart) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
-  EXPECT_THROW(place_interior(graph, g.mesh.V, g.mesh.V, 0), UsageError);
-  EXPECT_THROW(place_interior(graph, g.mesh.V, g.mesh.V.topRows(10), 5), UsageError);
-  EXPECT_EQ(place_interior(graph, g.mesh.V, g.mesh.V, int(g.mesh.V.rows())), g.mesh.V);
+  Eigen::MatrixX3d bent = g.mesh.V;
+  for (int i = 0; i < bent.rows(); ++i) {  // bent about the y axis, growing with x
+    const double a = 0.2 * g.mesh.V(i, 0), x = g.mesh.V(i, 0), z = g.mesh.V(i, 2);
+    bent(i, 0) = std::cos(a) * x - std::sin(a) * z;
+    bent(i, 2) = std::sin(a) * x + std::cos(a) * z;
+  }
+  bent += 0.05 * Eigen::MatrixX3d::Random(bent.rows(), 3);  // local detail lost
+  const auto moved = [&](double anchor) {
+    ArapSolveOptions options = held(1);
+    options.anchor = anchor;
+    options.max_iterations = 30;
+    options.tolerance = 0;
+    return (arap_solve(graph, g.mesh.V, bent, options) - bent).rowwise().norm().mean();
+  };
+  const double free = moved(0), weak = moved(0.1), strong = moved(10);
+  EXPECT_GT(free, weak);
+  EXPECT_GT(weak, strong);
+  EXPECT_LT(strong, 0.2 * free) << free << " " << weak << " " << strong;
+  ArapSolveOptions options = held(1);
+  options.anchor = 0.1;
+  EXPECT_LT(arap_energy(graph, g.mesh.V, arap_solve(graph, g.mesh.V, bent, options)),
+            0.5 * arap_energy(graph, g.mesh.V, bent));
+}
+
+TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  EXPECT_THROW(arap_solve(graph, g.mesh.V, g.mesh.V, held(0)), UsageError);
+  ArapSolveOptions negative = held(1);
+  negative.anchor = -1;
+  EXPECT_THROW(arap_solve(graph, g.mesh.V, g.mesh.V, negative), UsageError);
+  EXPECT_THROW(arap_solve(graph, g.mesh.V, g.mesh.V.topRows(10), held(5)), UsageError);
+  EXPECT_EQ(arap_solve(graph, g.mesh.V, g.mesh.V, held(int(g.mesh.V.rows()))), g.mesh.V);
 }
 
 }  // namespace

@@ -1,0 +1,39 @@
+// Local-global ARAP (as-rigid-as-possible, uniform edge weights) on an edge
+// graph, with some vertices held and the others optionally pulled back to
+// where they start. Two uses (docs/method.md):
+// - domain: surface places the interior (Steiner) vertices after the surface
+//   solve, the surface vertices held;
+// - integrate: turns a rotation field into a shape (one step, one vertex
+//   held), then restores local detail with the start anchored, so that the
+//   steps do not drift back to ARAP's own minimum, the input pose.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mesh/edge_graph.h"
+
+namespace unfold {
+
+struct ArapSolveOptions {
+  int num_fixed = 1;         ///< vertices [0, num_fixed) are held at Q's rows
+  int max_iterations = 200;  ///< local-global steps at most
+  /// stop when a step moves every free vertex by less than this times Q's RMS radius
+  double tolerance = 1e-7;
+  /// weight a of a |q_i - q_i^start|^2 per free vertex, in units of the
+  /// uniform graph Laplacian (whose diagonal is the degree); 0: none
+  double anchor = 0;
+};
+
+/// Minimises sum over edges |q_i - q_j - (R_i + R_j)/2 (p_i - p_j)|^2 (plus the
+/// anchor) over the free rows of Q by alternating best rotations R (Kabsch,
+/// per vertex) and one sparse solve; returns Q with the free rows moved.
+/// @param graph the edge graph (n vertices)
+/// @param P     rest positions, n x 3
+/// @param Q     n x 3: held rows and the free rows' start (and anchor)
+/// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
+///         max_iterations < 0, tolerance < 0 or anchor < 0
+/// @throws NumericalError if some free vertex has no path to a held one
+Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
+                            const ArapSolveOptions& options = {});
+
+}  // namespace unfold

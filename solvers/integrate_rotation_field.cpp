@@ -1,0 +1,27 @@
+#include "solvers/integrate_rotation_field.h"
+
+#include <utility>
+
+#include "core/errors.h"
+#include "solvers/arap_solve.h"
+
+namespace unfold {
+
+Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                          const Eigen::MatrixX3d& Q, double lambda2,
+                                          const IntegrateOptions& options) {
+  if (options.iterations < 0 || !(options.anchor >= 0) || !(options.tolerance >= 0) ||
+      !(lambda2 > 0))
+    throw UsageError(
+        "integrate_rotation_field: iterations, anchor and tolerance must be >= 0, lambda_2 > 0");
+  Eigen::MatrixX3d X = Q;
+  if (options.iterations > 0) {
+    X = arap_solve(graph, P, std::move(X), {1, 1, 0.0, 0.0});
+    X = arap_solve(graph, P, std::move(X),
+                   {1, options.iterations - 1, options.tolerance, options.anchor * lambda2});
+  }
+  X.rowwise() -= X.colwise().mean();
+  return X;
+}
+
+}  // namespace unfold

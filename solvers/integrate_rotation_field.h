@@ -1,0 +1,38 @@
+// A shape from a rotation field (docs/method.md, pose invariance). The most
+// pose-invariant states found are converged solves on the surface at low beta:
+// their limbs point the same way whatever the input pose, but they are inflated
+// (E_rig 5-8). Their per-vertex best rotations (from the rest tet mesh) keep
+// the orientation and drop the inflation; integrating them gives a shape with
+// the input's local detail in that common orientation.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mesh/edge_graph.h"
+
+namespace unfold {
+
+struct IntegrateOptions {
+  int iterations = 0;  ///< ARAP steps in all, the integration included; 0: off
+  /// anchor of the steps after the first, in units of `lambda2`: deformation modes
+  /// stiffer than about this are restored to the rest shape's, softer ones (the pose)
+  /// stay where the integration put them
+  double anchor = 20;
+  double tolerance = 1e-4;  ///< the steps stop when they move less (relative to the radius)
+};
+
+/// Integrates the rotation field of `Q` (best rotations from P, per vertex):
+/// one ARAP step from Q with one vertex held, then up to iterations - 1 ARAP
+/// steps anchored to that step's result with weight anchor * lambda2.
+/// @param graph   edge graph of the tet mesh, connected
+/// @param P       rest positions (n x 3)
+/// @param Q       positions whose rotation field is integrated (n x 3)
+/// @param lambda2 the anchor's unit, > 0: a lambda_2 (fiedler_value) of the shape, e.g.
+///        of its surface's graph Laplacian, the same for every pose
+/// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0
+/// @throws UsageError for mismatched sizes or negative options
+Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                          const Eigen::MatrixX3d& Q, double lambda2,
+                                          const IntegrateOptions& options);
+
+}  // namespace unfold
