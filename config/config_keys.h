@@ -11,7 +11,8 @@
   X(target_vertices, "simplify.target_vertices", target_vertices,                               \
     "simplify the surface to about this many vertices first; 0 keeps all")                      \
   X(tet_route, "tetrahedralize.route", tet.route,                                               \
-    "tetrahedralization route: auto (conforming, else robust), conforming, robust")             \
+    "tetrahedralization route: auto (conforming unless the surface intersects itself, else "    \
+    "robust), conforming, robust")                                                              \
   X(tet_quality, "tetrahedralize.quality", tet.quality,                                         \
     "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                    \
   X(tet_max_volume, "tetrahedralize.max_volume", tet.max_volume,                                \
@@ -23,7 +24,7 @@
     "several connected components: refuse (error naming the count) or separately (each "        \
     "unfolded on its own, put back together in input order)")                                   \
   X(domain, "domain", domain,                                                                   \
-    "volume: the energy on the tet mesh (the paper's); surface: on the surface's vertices and "  \
+    "volume: the energy on the tet mesh (the paper's); surface: on the surface's vertices and " \
     "triangle edges, the interior following by ARAP (more pose-invariant, docs/method.md)")     \
   X(beta_mode, "beta.mode", beta_mode,                                                          \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                         \
