@@ -90,6 +90,9 @@
     "Ceres stops when the relative step is below this")                                         \
   X(ceres_max_lbfgs_rank, "ceres.max_lbfgs_rank", ceres.max_lbfgs_rank,                         \
     "L-BFGS memory (Ceres max_lbfgs_rank)")                                                     \
+  X(metrics, "metrics.compute", metrics,                                                        \
+    "metrics to compute: a list of E_rig, E_str, E_geo (E_geo costs the most), all or none; "   \
+    "one not computed is null in the metrics JSON and empty in results.csv")                    \
   X(stretch_exact_limit, "metrics.stretch_exact_limit", stretch_metric.exact_limit,             \
     "E_str over all pairs up to this many vertices, sampled above")                             \
   X(stretch_samples, "metrics.stretch_samples", stretch_metric.sample_pairs,                    \

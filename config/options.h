@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "energies/energy_terms.h"
 #include "metrics/geodesic_error.h"
@@ -30,7 +31,8 @@ struct Options {
   LinearSolverOptions linear_solver;  ///< the global step's solver (method local_global)
   EnergyOptions energy;
   CeresOptions ceres;
-  LsmdsOptions lsmds;  ///< method: lsmds only
+  LsmdsOptions lsmds;                                              ///< method: lsmds only
+  std::vector<std::string> metrics = {"E_rig", "E_str", "E_geo"};  ///< the metrics computed
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;
   int threads = 0;
@@ -45,6 +47,9 @@ Options load_options(const std::string& config_path,
 
 /// Checks ranges and choices. @throws UsageError naming the key.
 void validate_options(const Options& options);
+
+/// Whether options.metrics asks for the metric `name` ("E_rig", "E_str" or "E_geo").
+bool computes_metric(const Options& options, const std::string& name);
 
 /// The options as a YAML document with every key (the effective configuration).
 std::string options_to_yaml(const Options& options);

@@ -17,7 +17,9 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                  {"beta", h.beta},
                                  {"energy", h.energy},
                                  {"edge_ratio", h.edge_ratio}});
+  // E_rig, E_str, E_geo not computed are NaN, written as null.
   return JsonObject{
+      {"metrics_computed", JsonArray(options.metrics.begin(), options.metrics.end())},
       {"E_rig", m.E_rig},
       {"E_str", m.E_str},
       {"E_str_exact", m.E_str_exact},

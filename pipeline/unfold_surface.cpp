@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <chrono>
+#include <limits>
 
 #include "core/errors.h"
 #include "mesh/check_surface_mesh.h"
@@ -251,15 +252,24 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   const Eigen::MatrixX3d& P = result.tets.V;
   const Eigen::MatrixX3d& Q = result.tet_canonical;
   UnfoldMetrics& m = result.metrics;
-  const RigidityError rig = rigidity_error(graph, P, Q);
-  m.E_rig = rig.mean;
-  m.rigidity_per_vertex = rig.per_vertex;
-  const StretchError str = stretch_error(P, Q, options.stretch_metric);
-  m.E_str = str.value;
-  m.E_str_exact = str.exact;
-  const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
-  m.E_geo = geo.value;
-  m.E_geo_exact = geo.exact;
+  constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+  m.E_rig = m.E_str = m.E_geo = kNotComputed;
+  m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
+  if (computes_metric(options, "E_rig")) {
+    const RigidityError rig = rigidity_error(graph, P, Q);
+    m.E_rig = rig.mean;
+    m.rigidity_per_vertex = rig.per_vertex;
+  }
+  if (computes_metric(options, "E_str")) {
+    const StretchError str = stretch_error(P, Q, options.stretch_metric);
+    m.E_str = str.value;
+    m.E_str_exact = str.exact;
+  }
+  if (computes_metric(options, "E_geo")) {
+    const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
+    m.E_geo = geo.value;
+    m.E_geo_exact = geo.exact;
+  }
   m.inverted_tets = count_inverted_tets(P, Q, result.tets.T);
   m.seconds = seconds_since(metrics_start);
   return result;
