@@ -59,6 +59,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                         {"seconds", r.tet_report.seconds}}},
       {"seconds_tetrahedralize", r.tet_report.seconds},
       {"seconds_unfold", r.seconds_unfold},
+      {"seconds_lambda2", r.seconds_lambda2},
+      {"seconds_cascade", r.seconds_cascade},
       {"seconds_metrics", m.seconds},
       {"method", options.method},
       {"warnings", warnings},

@@ -74,6 +74,7 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
 void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
                    UnfoldResult* out) {
   UnfoldResult& result = *out;
+  const auto start = std::chrono::steady_clock::now();
   UnfoldProblem problem;
   problem.graph = &graph;
   problem.rest = mesh.V;
@@ -115,16 +116,20 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
             << ", method " << options.method;
   CascadeOptions cascade = options.cascade;
   cascade.beta = result.beta_start;
+  result.seconds_lambda2 = seconds_since(start);
+  const auto cascade_start = std::chrono::steady_clock::now();
   int iterations_per_cascade = options.cascade.k_iter;
   if (options.method == "ceres" || options.method == "dpmu") {
     result.linear_solver = "ceres";
     CeresBackend backend(problem, options.ceres);
     iterations_per_cascade = options.ceres.max_num_iterations;
     result.cascade = run_cascade(problem, backend, cascade, iterations_per_cascade);
+    result.seconds_cascade = seconds_since(cascade_start);
     return;
   }
   LocalGlobalBackend local_global(problem, solver, amg);
   result.cascade = run_cascade(problem, local_global, cascade, iterations_per_cascade);
+  result.seconds_cascade = seconds_since(cascade_start);
   result.cg = local_global.data().cg_stats;
   if (result.cg.unconverged_solves > 0)
     result.warnings.push_back(

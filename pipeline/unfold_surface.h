@@ -54,7 +54,9 @@ struct UnfoldResult {
   int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
   double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
   CgStats cg;                 ///< iterative: what the CG global steps did
-  double seconds_unfold = 0;  ///< lambda_2 and the cascade
+  double seconds_lambda2 = 0;  ///< the solver's setup (AMG hierarchy included) and lambda_2
+  double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
+  double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
   std::vector<std::string> warnings;
 };
 

@@ -59,7 +59,8 @@ TEST(BackendCascade, CeresUnfoldsWithEnergyPerCascade) {
 TEST(BackendUserControl, PairsReachTheirTargetsAndRigidityHolds) {
   // configs/demo_pairs.csv: front feet and hind feet side by side.
   const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(0));
-  const UnfoldResult free = unfold_surface(shape, Options{});
+  const Options defaults;
+  const UnfoldResult free = unfold_surface(shape, defaults);
   const Options options = load_options(kConfigs + "user_control.yaml");
   const UnfoldResult held = unfold_surface(shape, options);
   const struct {
@@ -92,7 +93,8 @@ TEST(BackendVolume, NoInvertedTetrahedraOnWolf0) {
   const std::string path = test::shared_data("tosca/wolf0.off");
   if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/wolf0.off";
   const SurfaceMesh wolf = read_surface_mesh(path);
-  const UnfoldResult plain = unfold_surface(wolf, Options{});
+  const Options defaults;
+  const UnfoldResult plain = unfold_surface(wolf, defaults);
   const UnfoldResult held = unfold_surface(wolf, load_options(kConfigs + "volume.yaml"));
   EXPECT_GT(plain.metrics.inverted_tets, 0) << "nothing for the volume term to fix";
   EXPECT_EQ(held.metrics.inverted_tets, 0);

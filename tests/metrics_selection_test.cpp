@@ -54,7 +54,8 @@ TEST(MetricsSelection, FlagAndYamlForms) {
 
 TEST(MetricsSelection, OnlyTheAskedMetricsAreComputedAndTheyEqualAFullRun) {
   const SurfaceMesh sphere = test::uv_sphere(10, 16);
-  const UnfoldResult all = unfold_surface(sphere, Options());
+  const Options defaults;
+  const UnfoldResult all = unfold_surface(sphere, defaults);
   ASSERT_TRUE(std::isfinite(all.metrics.E_rig) && std::isfinite(all.metrics.E_str) &&
               std::isfinite(all.metrics.E_geo));
   Options some;
