@@ -87,8 +87,7 @@ TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,1.5,ok"), std::string::npos)
-      << text.str();
+  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,1.5,ok"), std::string::npos) << text.str();
   const std::vector<BatchRow> rows = read_results_csv(path);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].E_rig, 0.5);
