@@ -2,6 +2,7 @@
 // Flags and config only; the work is unfold_surface() in the library.
 #include <omp.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -84,6 +85,8 @@ int run() {
   if (FLAGS_render_color != "shading" && FLAGS_render_color != "rigidity")
     throw unfold::UsageError("--render_color: '" + FLAGS_render_color +
                              "' is not shading or rigidity");
+  if (FLAGS_render_color == "rigidity" && !unfold::computes_metric(options, "E_rig"))
+    throw unfold::UsageError("--render_color rigidity needs E_rig in metrics.compute (--metrics)");
   std::vector<double> sweep;
   if (!FLAGS_beta_sweep.empty()) {
     sweep = unfold::parse_beta_list(FLAGS_beta_sweep);
@@ -123,14 +126,22 @@ int run() {
   outputs.commit();
 
   const auto& m = result.metrics;
+  const auto metric = [](const char* name, double value) {  // NaN: not computed
+    char text[64];
+    if (std::isnan(value))
+      std::snprintf(text, sizeof text, "%s not computed", name);
+    else
+      std::snprintf(text, sizeof text, "%s %.3f", name, value);
+    return std::string(text);
+  };
   std::printf(
       "unfolded %d surface vertices (%d tet vertices, %d tets; %s route, %d intersecting face "
-      "pairs) in %.2f s: E_rig %.3f, E_str %.3f, E_geo %.3f, edge ratio %.3f, %d cascades, %d "
-      "iterations%s\n",
+      "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s\n",
       int(result.surface.V.rows()), int(result.tets.V.rows()), int(result.tets.T.rows()),
       result.tet_report.route.c_str(), result.tet_report.num_intersecting_faces,
-      result.tet_report.seconds + result.seconds_unfold, m.E_rig, m.E_str, m.E_geo,
-      result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,
+      result.tet_report.seconds + result.seconds_unfold, metric("E_rig", m.E_rig).c_str(),
+      metric("E_str", m.E_str).c_str(), metric("E_geo", m.E_geo).c_str(), result.cascade.edge_ratio,
+      result.cascade.cascades, result.cascade.iterations,
       result.cascade.reached_band ? "" : " (edge-ratio band not reached)");
   return 0;
 }

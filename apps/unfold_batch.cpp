@@ -15,6 +15,9 @@ DEFINE_string(shard, "0/1",
               "array task; then collect with one run without --shard and --skip_existing");
 DEFINE_bool(skip_existing, false, "keep shapes whose results exist with status ok");
 DEFINE_int32(target_vertices, -1, "if >= 0: overrides simplify.target_vertices of every config");
+DEFINE_string(metrics, "",
+              "if set: overrides metrics.compute of every config, e.g. E_rig,E_str skips E_geo "
+              "(its column is then empty)");
 DEFINE_int32(retrieval_points, 1000, "points sampled per shape for retrieval");
 DEFINE_bool(progress, true, "progress bar on stderr (only when it is a terminal)");
 
@@ -37,6 +40,7 @@ int main(int argc, char** argv) {
     options.skip_existing = FLAGS_skip_existing;
     if (FLAGS_target_vertices >= 0)
       options.overrides["simplify.target_vertices"] = std::to_string(FLAGS_target_vertices);
+    if (!FLAGS_metrics.empty()) options.overrides["metrics.compute"] = FLAGS_metrics;
     if (FLAGS_retrieval_points < 4) throw unfold::UsageError("--retrieval_points must be >= 4");
     options.retrieval.sample_points = FLAGS_retrieval_points;
     options.progress = FLAGS_progress;

@@ -10,18 +10,27 @@
 //   tet_vertices tets seconds_tet seconds_unfold seconds_metrics seconds_total
 //   iterations linear_solver cg_iterations peak_rss_mb peak_rss_tetgen_mb E_rig edge_ratio
 // (seconds_unfold: AMG setup, lambda_2 and the cascade; seconds_total: the
-// whole unfold_surface call). --analyze_only stops after the direct solver's
+// whole unfold_surface call), then
+//   seconds_read seconds_lambda2 seconds_cascade seconds_write surface_vertices E_str
+// (seconds_read: reading --input, 0 for the demo shape; seconds_lambda2: the
+// solver's setup, AMG included, and lambda_2; seconds_write: the canonical
+// surface as OFF and the metrics JSON, as `unfold --output --metrics_json`
+// writes them, into a temporary folder). --metrics=E_rig,E_str (etc.) sets
+// metrics.compute. --analyze_only stops after the direct solver's
 // symbolic analysis and prints
 //   tet_vertices tets seconds_tet seconds_analyze factor_nonzeros factor_gflops peak_rss_mb
 // --plot draws the scaling plot from bench/run's CSV (columns as the row above).
 #include <glog/logging.h>
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -29,6 +38,8 @@
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
+#include "mesh/write_surface_mesh.h"
+#include "pipeline/metrics_json.h"
 #include "pipeline/unfold_surface.h"
 #include "render/plot_scaling.h"
 #include "render/write_png.h"
@@ -47,6 +58,10 @@ double enclosed_volume(const SurfaceMesh& s) {
     for (size_t k = 1; k + 1 < f.size(); ++k)
       six_volume += s.V.row(f[0]).dot(s.V.row(f[k]).cross(s.V.row(f[k + 1])));
   return std::abs(six_volume) / 6;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double peak_rss_mb(int who) {
@@ -84,7 +99,7 @@ int plot(const std::string& csv, const std::string& png) {
 }
 
 int run(int argc, char** argv) {
-  std::string input, plot_csv, output, linear_solver = "auto";
+  std::string input, plot_csv, output, linear_solver = "auto", metrics;
   int resolution = 0;
   double divisions = 0;
   bool analyze_only = false;
@@ -103,6 +118,8 @@ int run(int argc, char** argv) {
       analyze_only = true;
     else if (key == "--linear_solver")
       linear_solver = value;
+    else if (key == "--metrics")
+      metrics = value;
     else if (key == "--plot")
       plot_csv = value;
     else if (key == "--output")
@@ -113,12 +130,14 @@ int run(int argc, char** argv) {
   if (!plot_csv.empty()) return plot(plot_csv, output);
   if (input.empty() == (resolution == 0))
     throw UsageError("scale_bench: give exactly one of --input and --demo_resolution");
+  const auto read_start = std::chrono::steady_clock::now();
   const SurfaceMesh surface = input.empty()
                                   ? make_articulated_shape(ShapePose::preset(0), resolution)
                                   : read_surface_mesh(input);
-  Options options;
-  options.linear_solver.method = linear_solver;
-  validate_options(options);
+  const double seconds_read = input.empty() ? 0 : seconds_since(read_start);
+  std::map<std::string, std::string> overrides = {{"linear_solver.method", linear_solver}};
+  if (!metrics.empty()) overrides["metrics.compute"] = metrics;
+  Options options = load_options("", overrides);
   if (divisions > 0) options.tet.max_volume = enclosed_volume(surface) / divisions;
   if (analyze_only) {
     TetReport report;
@@ -127,8 +146,7 @@ int run(int argc, char** argv) {
     const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), tets.T);
     SparseLdlt ldlt;
     ldlt.analyze(graph_laplacian(graph));
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
     std::printf("%d\t%d\t%.3f\t%.3f\t%.0f\t%.2f\t%.0f\n", int(tets.V.rows()), int(tets.T.rows()),
                 report.seconds, seconds, ldlt.factor_nonzeros(), ldlt.factor_flops() / 1e9,
                 peak_rss_mb(RUSAGE_SELF));
@@ -136,13 +154,24 @@ int run(int argc, char** argv) {
   }
   const auto start = std::chrono::steady_clock::now();
   const UnfoldResult r = unfold_surface(surface, options);
-  const double total =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%d\t%s\t%d\t%.0f\t%.0f\t%.4f\t%.4f\n",
-              int(r.tets.V.rows()), int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold,
-              r.metrics.seconds, total, r.cascade.iterations, r.linear_solver.c_str(),
-              r.cg.iterations, peak_rss_mb(RUSAGE_SELF), peak_rss_mb(RUSAGE_CHILDREN),
-              r.metrics.E_rig, r.cascade.edge_ratio);
+  const double total = seconds_since(start);
+  const std::string dir = std::filesystem::temp_directory_path().string() + "/scale_bench_" +
+                          std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  const auto write_start = std::chrono::steady_clock::now();
+  write_surface_mesh(dir + "/canonical.off", r.canonical);
+  write_metrics_json(dir + "/metrics.json", r, options);
+  const double seconds_write = seconds_since(write_start);
+  std::filesystem::remove_all(dir);
+  std::printf(
+      "%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%d\t%s\t%d\t%.0f\t%.0f\t%.4f\t%.4f\t%.3f\t%.3f\t%.3f\t%."
+      "3f\t%d\t%."
+      "4f\n",
+      int(r.tets.V.rows()), int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold,
+      r.metrics.seconds, total, r.cascade.iterations, r.linear_solver.c_str(), r.cg.iterations,
+      peak_rss_mb(RUSAGE_SELF), peak_rss_mb(RUSAGE_CHILDREN), r.metrics.E_rig, r.cascade.edge_ratio,
+      seconds_read, r.seconds_lambda2, r.seconds_cascade, seconds_write, int(r.surface.V.rows()),
+      r.metrics.E_str);
   return 0;
 }
 

@@ -11,7 +11,8 @@
   X(target_vertices, "simplify.target_vertices", target_vertices,                                \
     "simplify the surface to about this many vertices first; 0 keeps all")                       \
   X(tet_route, "tetrahedralize.route", tet.route,                                                \
-    "tetrahedralization route: auto (conforming, else robust), conforming, robust")              \
+    "tetrahedralization route: auto (conforming unless the surface intersects itself, else "     \
+    "robust), conforming, robust")                                                               \
   X(tet_quality, "tetrahedralize.quality", tet.quality,                                          \
     "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                     \
   X(tet_max_volume, "tetrahedralize.max_volume", tet.max_volume,                                 \
@@ -98,6 +99,9 @@
     "Ceres stops when the relative step is below this")                                          \
   X(ceres_max_lbfgs_rank, "ceres.max_lbfgs_rank", ceres.max_lbfgs_rank,                          \
     "L-BFGS memory (Ceres max_lbfgs_rank)")                                                      \
+  X(metrics, "metrics.compute", metrics,                                                         \
+    "metrics to compute: a list of E_rig, E_str, E_geo (E_geo costs the most), all or none; "    \
+    "one not computed is null in the metrics JSON and empty in results.csv")                     \
   X(stretch_exact_limit, "metrics.stretch_exact_limit", stretch_metric.exact_limit,              \
     "E_str over all pairs up to this many vertices, sampled above")                              \
   X(stretch_samples, "metrics.stretch_samples", stretch_metric.sample_pairs,                     \

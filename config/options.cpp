@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -61,6 +62,25 @@ void parse_into(const YAML::Node& node, const std::string& key, std::array<doubl
   for (size_t k = 0; k < 2; ++k) parse_into(node[k], key, &(*value)[k]);
 }
 
+// A list of names; one name alone is a list of one, and "all" and "none"
+// stand for every metric and none.
+void parse_into(const YAML::Node& node, const std::string& key, std::vector<std::string>* value) {
+  value->clear();
+  if (node.IsScalar() && node.Scalar() == "all") {
+    *value = Options().metrics;
+  } else if (node.IsScalar() && node.Scalar() != "none") {
+    value->push_back(node.Scalar());
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) {
+      value->emplace_back();
+      parse_into(item, key, &value->back());
+    }
+  } else if (!node.IsScalar()) {
+    throw UsageError("config key '" + key + "' must be a list of names, got '" + describe(node) +
+                     "'");
+  }
+}
+
 YAML::Node to_node(bool value) { return YAML::Node(value); }
 YAML::Node to_node(int value) { return YAML::Node(value); }
 YAML::Node to_node(int64_t value) { return YAML::Node(value); }
@@ -70,6 +90,12 @@ YAML::Node to_node(double value) {
   std::ostringstream out;
   out << std::setprecision(15) << value;
   return YAML::Node(out.str());
+}
+YAML::Node to_node(const std::vector<std::string>& value) {
+  YAML::Node node(YAML::NodeType::Sequence);
+  node.SetStyle(YAML::EmitterStyle::Flow);
+  for (const std::string& item : value) node.push_back(item);
+  return node;
 }
 YAML::Node to_node(const std::array<double, 2>& value) {
   YAML::Node node;
@@ -220,6 +246,14 @@ void validate_options(const Options& o) {
   require(std::isfinite(c.edge_ratio_band[0]) && std::isfinite(c.edge_ratio_band[1]) &&
               c.edge_ratio_band[0] <= c.edge_ratio_band[1],
           "cascade.edge_ratio_band", "must be two finite numbers, low <= high");
+  const std::vector<std::string> known = Options().metrics;
+  for (size_t k = 0; k < o.metrics.size(); ++k) {
+    require(std::find(known.begin(), known.end(), o.metrics[k]) != known.end(), "metrics.compute",
+            "lists '" + o.metrics[k] + "'; known: E_rig, E_str, E_geo (or all, none)");
+    require(
+        std::find(o.metrics.begin(), o.metrics.begin() + k, o.metrics[k]) == o.metrics.begin() + k,
+        "metrics.compute", "lists '" + o.metrics[k] + "' twice");
+  }
   require(o.stretch_metric.exact_limit >= 0, "metrics.stretch_exact_limit", "must be >= 0");
   require(o.stretch_metric.sample_pairs >= 2, "metrics.stretch_samples", "must be at least 2");
   require(o.geodesic_metric.exact_limit >= 0, "metrics.geodesic_exact_limit", "must be >= 0");
@@ -249,6 +283,10 @@ void validate_options(const Options& o) {
   validate_linear_solver_options(o.linear_solver);
   validate_ceres_options(o.ceres);
   validate_lsmds_options(o.lsmds);
+}
+
+bool computes_metric(const Options& options, const std::string& name) {
+  return std::find(options.metrics.begin(), options.metrics.end(), name) != options.metrics.end();
 }
 
 std::string options_to_yaml(const Options& options) {

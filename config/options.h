@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "energies/energy_terms.h"
 #include "metrics/geodesic_error.h"
@@ -32,7 +33,8 @@ struct Options {
   IntegrateOptions integrate;         ///< after the cascade (pose invariance)
   EnergyOptions energy;
   CeresOptions ceres;
-  LsmdsOptions lsmds;  ///< method: lsmds only
+  LsmdsOptions lsmds;                                              ///< method: lsmds only
+  std::vector<std::string> metrics = {"E_rig", "E_str", "E_geo"};  ///< the metrics computed
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;
   int threads = 0;
@@ -47,6 +49,9 @@ Options load_options(const std::string& config_path,
 
 /// Checks ranges and choices. @throws UsageError naming the key.
 void validate_options(const Options& options);
+
+/// Whether options.metrics asks for the metric `name` ("E_rig", "E_str" or "E_geo").
+bool computes_metric(const Options& options, const std::string& name);
 
 /// The options as a YAML document with every key (the effective configuration).
 std::string options_to_yaml(const Options& options);

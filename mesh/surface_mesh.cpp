@@ -2,6 +2,15 @@
 
 namespace unfold {
 
+SurfaceMesh surface_mesh_from_rows(const std::vector<double>& coords,
+                                   std::vector<std::vector<int>> faces) {
+  SurfaceMesh mesh;
+  mesh.V = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+      coords.data(), Eigen::Index(coords.size() / 3), 3);
+  mesh.faces = std::move(faces);
+  return mesh;
+}
+
 Eigen::MatrixX3i triangulate_faces(const SurfaceMesh& mesh) {
   Eigen::Index count = 0;
   for (const auto& f : mesh.faces) count += f.size() >= 3 ? Eigen::Index(f.size() - 2) : 0;

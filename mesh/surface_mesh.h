@@ -12,6 +12,10 @@ struct SurfaceMesh {
   std::vector<std::vector<int>> faces;  ///< vertex indices per face, as in the file
 };
 
+/// A mesh from x y z per vertex (coords.size() / 3 rows) and the faces.
+SurfaceMesh surface_mesh_from_rows(const std::vector<double>& coords,
+                                   std::vector<std::vector<int>> faces);
+
 /// Fan-triangulates every face (triangles stay as they are), in face order.
 Eigen::MatrixX3i triangulate_faces(const SurfaceMesh& mesh);
 

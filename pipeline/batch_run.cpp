@@ -7,10 +7,12 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -68,11 +70,23 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return fields;
 }
 
+// A metric not computed (NaN, metrics.compute) is an empty field.
+std::string metric_field(double value) {
+  if (std::isnan(value)) return "";
+  std::ostringstream s;
+  s << std::setprecision(10) << value;
+  return s.str();
+}
+
+double parse_metric_field(const std::string& field) {
+  return field.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(field);
+}
+
 std::string format_row(const BatchRow& r) {
   std::ostringstream s;
   s << std::setprecision(10) << csv_field(r.shape) << ',' << csv_field(r.shape_class) << ','
-    << csv_field(r.method) << ',' << r.E_rig << ',' << r.E_str << ',' << r.E_geo << ',' << r.seconds
-    << ',' << csv_field(r.status);
+    << csv_field(r.method) << ',' << metric_field(r.E_rig) << ',' << metric_field(r.E_str) << ','
+    << metric_field(r.E_geo) << ',' << r.seconds << ',' << csv_field(r.status);
   return s.str();
 }
 
@@ -82,7 +96,8 @@ BatchRow parse_row(const std::string& line, const std::string& where) {
     throw InputError(where + ": expected 8 fields, got " + std::to_string(f.size()));
   BatchRow r{f[0], f[1], f[2], 0, 0, 0, 0, f[7]};
   try {
-    r.E_rig = std::stod(f[3]), r.E_str = std::stod(f[4]), r.E_geo = std::stod(f[5]);
+    r.E_rig = parse_metric_field(f[3]), r.E_str = parse_metric_field(f[4]);
+    r.E_geo = parse_metric_field(f[5]);
     r.seconds = std::stod(f[6]);
   } catch (const std::exception&) {
     throw InputError(where + ": a number field is not a number");

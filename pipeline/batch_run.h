@@ -37,7 +37,7 @@ struct BatchOptions {
 
 struct BatchRow {
   std::string shape, shape_class, method;
-  double E_rig = 0, E_str = 0, E_geo = 0;
+  double E_rig = 0, E_str = 0, E_geo = 0;  ///< NaN: not computed (metrics.compute)
   double seconds = 0;  ///< the solve and metrics (unfold_prepared), not the shared preparation
   std::string status;  ///< "ok" or the error
 };
@@ -60,7 +60,8 @@ std::vector<std::string> list_meshes(const std::string& dir);
 ///         InputError for an unreadable input_dir, OutputError for output_dir
 std::vector<BatchRow> run_batch(const BatchOptions& options);
 
-/// Writes shape,class,method,E_rig,E_str,E_geo,seconds,status (atomically).
+/// Writes shape,class,method,E_rig,E_str,E_geo,seconds,status (atomically); a
+/// metric not computed (NaN) is an empty field, and reads back as NaN.
 /// @throws OutputError
 void write_results_csv(const std::string& path, const std::vector<BatchRow>& rows);
 

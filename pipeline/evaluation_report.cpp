@@ -1,6 +1,7 @@
 #include "pipeline/evaluation_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -34,6 +35,8 @@ std::vector<std::string> methods_of(const std::vector<BatchRow>& rows) {
 }
 
 double metric(const BatchRow& r, int k) { return k == 0 ? r.E_rig : k == 1 ? r.E_str : r.E_geo; }
+// A row that has metric k: its run succeeded and computed it (metrics.compute).
+bool has_metric(const BatchRow& r, int k) { return r.status == "ok" && !std::isnan(metric(r, k)); }
 const char* kMetricNames[3] = {"E_rig", "E_str", "E_geo"};
 
 std::string number(double x, const char* format = "%.4f") {
@@ -124,7 +127,8 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
   for (const auto& r : rows) classes.insert(r.shape_class);
   std::ostringstream md;
   for (int k = 0; k < 3; ++k) {
-    md << "### Mean " << kMetricNames[k] << " per class (ok shapes / all)\n\n| class |";
+    md << "### Mean " << kMetricNames[k]
+       << " per class (ok shapes that computed it / all)\n\n| class |";
     for (const auto& m : methods) md << ' ' << m << " |";
     md << "\n|---|";
     for (size_t i = 0; i < methods.size(); ++i) md << "---|";
@@ -139,7 +143,7 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
         for (const auto& r : rows)
           if (r.method == m && (c == "all" || r.shape_class == c)) {
             ++all;
-            if (r.status == "ok") sum += metric(r, k), ++ok;
+            if (has_metric(r, k)) sum += metric(r, k), ++ok;
           }
         md << ' ' << (ok > 0 ? number(sum / ok) : "-") << " (" << ok << "/" << all << ") |";
       }
@@ -176,7 +180,7 @@ void write_cdf_plots(const std::vector<ReportRun>& runs, const std::string& dir)
     for (const auto& m : methods_of(rows)) {
       std::vector<double> values;
       for (const auto& r : rows)
-        if (r.method == m && r.status == "ok") values.push_back(metric(r, k));
+        if (r.method == m && has_metric(r, k)) values.push_back(metric(r, k));
       if (!values.empty()) series.push_back({m, values});
     }
     if (series.empty()) continue;

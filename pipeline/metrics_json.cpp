@@ -17,7 +17,9 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                  {"beta", h.beta},
                                  {"energy", h.energy},
                                  {"edge_ratio", h.edge_ratio}});
+  // E_rig, E_str, E_geo not computed are NaN, written as null.
   return JsonObject{
+      {"metrics_computed", JsonArray(options.metrics.begin(), options.metrics.end())},
       {"E_rig", m.E_rig},
       {"E_str", m.E_str},
       {"E_str_exact", m.E_str_exact},
@@ -57,6 +59,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                         {"seconds", r.tet_report.seconds}}},
       {"seconds_tetrahedralize", r.tet_report.seconds},
       {"seconds_unfold", r.seconds_unfold},
+      {"seconds_lambda2", r.seconds_lambda2},
+      {"seconds_cascade", r.seconds_cascade},
       {"seconds_metrics", m.seconds},
       {"method", options.method},
       {"warnings", warnings},

@@ -1,5 +1,7 @@
 #include "pipeline/tet_fields.h"
 
+#include <cmath>
+
 #include "mesh/edge_graph.h"
 #include "metrics/edge_ratio.h"
 #include "metrics/tet_deformation.h"
@@ -12,8 +14,10 @@ TetMeshFields canonical_tet_fields(const UnfoldResult& result) {
   const EdgeGraph graph = build_edge_graph(int(P.rows()), result.tets.T);
   const TetDeformation tets = tet_deformation(P, Q, result.tets.T);
   TetMeshFields fields;
-  fields.per_vertex = {{"rigidity_error", result.metrics.rigidity_per_vertex},
-                       {"stretch_ratio", vertex_edge_ratio(graph, P, Q)}};
+  fields.per_vertex = {{"stretch_ratio", vertex_edge_ratio(graph, P, Q)}};
+  if (!std::isnan(result.metrics.E_rig))  // E_rig computed (metrics.compute)
+    fields.per_vertex.insert(fields.per_vertex.begin(),
+                             {"rigidity_error", result.metrics.rigidity_per_vertex});
   fields.per_tet = {{"volume_ratio", tets.volume_ratio}, {"rigidity", tets.rigidity}};
   return fields;
 }

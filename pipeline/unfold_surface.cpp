@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <chrono>
+#include <limits>
 
 #include "core/errors.h"
 #include "mesh/check_surface_mesh.h"
@@ -75,6 +76,7 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
 void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
                    UnfoldResult* out) {
   UnfoldResult& result = *out;
+  const auto start = std::chrono::steady_clock::now();
   const UnfoldProblem problem = make_unfold_problem(mesh, graph, options.energy);
   const int n = graph.num_vertices;
   // The solver is decided once here (it needs a symbolic analysis), for
@@ -111,9 +113,12 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
             << ", method " << options.method;
   CascadeOptions cascade = options.cascade;
   cascade.beta = result.beta_start;
+  result.seconds_lambda2 = seconds_since(start);
+  const auto cascade_start = std::chrono::steady_clock::now();
   const std::unique_ptr<CascadeBackend> backend =
       make_backend({options.method, solver, options.ceres}, problem, amg);
   result.cascade = run_cascade(problem, *backend, cascade);
+  result.seconds_cascade = seconds_since(cascade_start);
   const auto* local_global = dynamic_cast<const LocalGlobalBackend*>(backend.get());
   if (!local_global) {
     result.linear_solver = "ceres";
@@ -268,15 +273,24 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   const Eigen::MatrixX3d& P = result.tets.V;
   const Eigen::MatrixX3d& Q = result.tet_canonical;
   UnfoldMetrics& m = result.metrics;
-  const RigidityError rig = rigidity_error(graph, P, Q);
-  m.E_rig = rig.mean;
-  m.rigidity_per_vertex = rig.per_vertex;
-  const StretchError str = stretch_error(P, Q, options.stretch_metric);
-  m.E_str = str.value;
-  m.E_str_exact = str.exact;
-  const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
-  m.E_geo = geo.value;
-  m.E_geo_exact = geo.exact;
+  constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+  m.E_rig = m.E_str = m.E_geo = kNotComputed;
+  m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
+  if (computes_metric(options, "E_rig")) {
+    const RigidityError rig = rigidity_error(graph, P, Q);
+    m.E_rig = rig.mean;
+    m.rigidity_per_vertex = rig.per_vertex;
+  }
+  if (computes_metric(options, "E_str")) {
+    const StretchError str = stretch_error(P, Q, options.stretch_metric);
+    m.E_str = str.value;
+    m.E_str_exact = str.exact;
+  }
+  if (computes_metric(options, "E_geo")) {
+    const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
+    m.E_geo = geo.value;
+    m.E_geo_exact = geo.exact;
+  }
   m.inverted_tets = count_inverted_tets(P, Q, result.tets.T);
   m.seconds = seconds_since(metrics_start);
   return result;

@@ -14,6 +14,8 @@
 
 namespace unfold {
 
+/// E_rig, E_str and E_geo are NaN when not computed (options.metrics), which
+/// the metrics JSON writes as null.
 struct UnfoldMetrics {
   double E_rig = 0;         ///< Eq. 8 over the tet edges
   double E_str = 0;         ///< Eq. 9 over the tet vertices
@@ -22,7 +24,8 @@ struct UnfoldMetrics {
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
   int inverted_tets = 0;    ///< tetrahedra whose orientation flipped
   double seconds = 0;
-  Eigen::VectorXd rigidity_per_vertex;  ///< E_rig's term of each tet vertex (RigidityError)
+  /// E_rig's term of each tet vertex (RigidityError); NaN when E_rig is not computed
+  Eigen::VectorXd rigidity_per_vertex;
 };
 
 /// A surface checked, simplified if asked, and tetrahedralized: what every
@@ -51,7 +54,9 @@ struct UnfoldResult {
   int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
   double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
   CgStats cg;                 ///< iterative: what the CG global steps did
-  double seconds_unfold = 0;  ///< lambda_2 and the cascade
+  double seconds_lambda2 = 0;  ///< the solver's setup (AMG hierarchy included) and lambda_2
+  double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
+  double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
   std::vector<std::string> warnings;
 };
 

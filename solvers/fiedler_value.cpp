@@ -1,6 +1,7 @@
 #include "solvers/fiedler_value.h"
 
 #include <Spectra/SymEigsShiftSolver.h>
+#include <glog/logging.h>
 
 #include <Eigen/SparseCholesky>
 
@@ -60,6 +61,7 @@ double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg) {
     throw NumericalError("LOBPCG for lambda_2 did not converge (relative residual " +
                          std::to_string(r.relative_residual) + " after " +
                          std::to_string(r.iterations) + " iterations)");
+  VLOG(1) << "lambda_2 = " << r.values[0] << ": LOBPCG, " << r.iterations << " iterations";
   return r.values[0];
 }
 

@@ -110,7 +110,8 @@ bool same_value(const YAML::Node& a, const YAML::Node& b) {
 TEST(Docs, UsageListsEveryConfigKeyWithPathAndDefault) {
   const std::string text = section(read_text(UNFOLD_SOURCE_DIR "/docs/usage.md"), "Config keys");
   ASSERT_FALSE(text.empty()) << "docs/usage.md has no '## Config keys' section";
-  const YAML::Node defaults = YAML::Load(options_to_yaml(Options()));
+  const Options options;
+  const YAML::Node defaults = YAML::Load(options_to_yaml(options));
   const auto check = [&](const std::string& flag, const std::string& path) {
     const std::vector<std::string> cells = row(text, flag);
     ASSERT_GE(cells.size(), 3u) << "docs/usage.md: no config key row for --" << flag;

@@ -100,7 +100,8 @@ TEST(Lsmds, FarthestPointLandmarksAreDistinct) {
 
 TEST(Baselines, LsmdsAndDpmuRunThroughThePipeline) {
   const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(1), 32);
-  const PreparedMesh prepared = prepare_mesh(pose, Options{});
+  const Options defaults;
+  const PreparedMesh prepared = prepare_mesh(pose, defaults);
   Options lsmds_options;
   lsmds_options.method = "lsmds";
   const UnfoldResult l = unfold_prepared(prepared, lsmds_options);

@@ -86,18 +86,25 @@ TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
   EXPECT_LT(volume, 4.0 / 3.0 * M_PI * 8.0);
 }
 
-TEST(RobustTetrahedralize, AutoFallsBackOnASelfIntersectingSurface) {
+// TetGen's conforming mode refuses these surfaces (the conforming route
+// throws on each); auto knows it beforehand and goes robust without trying.
+TEST(RobustTetrahedralize, AutoGoesRobustWithoutTryingOnASelfIntersectingSurface) {
   const SurfaceMesh folded = test::two_interpenetrating_octahedra();
   TetReport report;
   const TetMesh tets = tetrahedralize(folded, TetOptions{}, &report);
   expect_usable(folded, tets);
   EXPECT_EQ(report.route, "robust");
-  EXPECT_NE(report.fallback.find("TetGen"), std::string::npos) << report.fallback;
+  EXPECT_GT(report.num_intersecting_faces, 0);
+  EXPECT_NE(report.fallback.find("intersects itself"), std::string::npos) << report.fallback;
+  EXPECT_NE(report.fallback.find("not tried"), std::string::npos) << report.fallback;
+  TetOptions conforming;
+  conforming.route = "conforming";
+  EXPECT_THROW(tetrahedralize(folded, conforming), NumericalError);
 }
 
-TEST(RobustTetrahedralize, KeepsVerticesAtEqualPositionsApart) {
-  // Vertex 0 copied: the copy takes over half of vertex 0's faces, so the two
-  // are distinct vertices at one position (TetGen alone would merge them).
+// Vertex 0 copied: the copy takes over half of vertex 0's faces, so the two
+// are distinct vertices at one position (TetGen alone would merge them).
+SurfaceMesh sphere_with_a_vertex_twice() {
   SurfaceMesh sphere = test::uv_sphere(8, 12);
   const int copy = int(sphere.V.rows());
   sphere.V.conservativeResize(copy + 1, 3);
@@ -106,7 +113,24 @@ TEST(RobustTetrahedralize, KeepsVerticesAtEqualPositionsApart) {
   for (auto& f : sphere.faces)
     for (int& v : f)
       if (v == 0 && moved++ % 2 == 0) v = copy;
-  ASSERT_GT(moved, 2);
+  EXPECT_GT(moved, 2);
+  return sphere;
+}
+
+TEST(RobustTetrahedralize, AutoGoesRobustWithoutTryingWithVerticesAtOnePosition) {
+  const SurfaceMesh sphere = sphere_with_a_vertex_twice();
+  TetReport report;
+  expect_usable(sphere, tetrahedralize(sphere, TetOptions{}, &report));
+  EXPECT_EQ(report.route, "robust");
+  EXPECT_EQ(report.num_intersecting_faces, 0);
+  EXPECT_NE(report.fallback.find("at one position"), std::string::npos) << report.fallback;
+  TetOptions conforming;
+  conforming.route = "conforming";
+  EXPECT_THROW(tetrahedralize(sphere, conforming), NumericalError);
+}
+
+TEST(RobustTetrahedralize, KeepsVerticesAtEqualPositionsApart) {
+  const SurfaceMesh sphere = sphere_with_a_vertex_twice();
   TetOptions options;
   options.route = "robust";
   expect_usable(sphere, tetrahedralize(sphere, options));

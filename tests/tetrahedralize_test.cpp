@@ -35,6 +35,7 @@ TEST(Tetrahedralize, KeepsSurfaceVerticesFirstAndFillsTheVolume) {
   EXPECT_EQ(tets.num_surface_vertices, sphere.V.rows());
   EXPECT_EQ(tets.V.topRows(sphere.V.rows()), sphere.V);
   EXPECT_EQ(report.route, "conforming");
+  EXPECT_EQ(report.fallback, "");  // a clean surface: auto tries conforming, which succeeds
   EXPECT_EQ(report.num_tets, tets.T.rows());
   EXPECT_EQ(report.num_interior_points, tets.V.rows() - sphere.V.rows());
   // The inscribed polyhedron's volume: a bit below the sphere's 4/3 pi r^3.

@@ -3,25 +3,34 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace unfold {
 namespace {
 
 // Signed solid angle of triangle (a, b, c) seen from q (Van Oosterom and
 // Strackee 1983); positive when q is behind the triangle's normal.
-double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                   const Eigen::Vector3d& q) {
-  const Eigen::Vector3d x = a - q, y = b - q, z = c - q;
-  const double lx = x.norm(), ly = y.norm(), lz = z.norm();
+// x, y, z: the corners relative to q; lx, ly, lz: their lengths.
+double solid_angle(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const Eigen::Vector3d& z,
+                   double lx, double ly, double lz) {
   const double numerator = x.dot(y.cross(z));
   const double denominator = lx * ly * lz + x.dot(y) * lz + y.dot(z) * lx + z.dot(x) * ly;
   return 2 * std::atan2(numerator, denominator);
+}
+
+double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                   const Eigen::Vector3d& q) {
+  const Eigen::Vector3d x = a - q, y = b - q, z = c - q;
+  return solid_angle(x, y, z, x.norm(), y.norm(), z.norm());
 }
 
 double triangle_solid_angle(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int t,
                             const Eigen::Vector3d& q) {
   return solid_angle(V.row(F(t, 0)), V.row(F(t, 1)), V.row(F(t, 2)), q);
 }
+
+constexpr int kLeafSize = 8;
+constexpr int kMaxLeafPoints = 3 * kLeafSize;
 
 // Fills node `index` with triangles order[first, first + count) and builds its subtree.
 void build(FastWindingNumberTree& tree, const Eigen::MatrixX3d& centroids, int index, int first,
@@ -47,7 +56,6 @@ void build(FastWindingNumberTree& tree, const Eigen::MatrixX3d& centroids, int i
       node.radius =
           std::max(node.radius,
                    (tree.V.row(tree.F(tree.order[size_t(k)], j)).transpose() - node.center).norm());
-  constexpr int kLeafSize = 8;
   if (count > kLeafSize) {
     int axis = 0;
     box.sizes().maxCoeff(&axis);
@@ -61,8 +69,54 @@ void build(FastWindingNumberTree& tree, const Eigen::MatrixX3d& centroids, int i
     build(tree, centroids, node.left, first, count / 2);
     build(tree, centroids, node.left + 1, first + count / 2, count - count / 2);
   } else {
+    // The leaf's distinct corners (at most 3 kLeafSize, so a byte indexes them).
+    node.first_point = int(tree.points.size());
+    for (int k = first; k < first + count; ++k)
+      for (int j = 0; j < 3; ++j) {
+        const int v = tree.F(tree.order[size_t(k)], j);
+        int local = 0;
+        while (local < node.num_points &&
+               tree.points[size_t(node.first_point + local)] != tree.V.row(v).transpose())
+          ++local;
+        if (local == node.num_points) {
+          tree.points.push_back(tree.V.row(v).transpose());
+          ++node.num_points;
+        }
+        tree.corners[size_t(3 * k + j)] = static_cast<unsigned char>(local);
+      }
     tree.nodes[size_t(index)] = node;
   }
+}
+
+// Spreads the low 10 bits of v to every third bit (Morton code helper).
+uint32_t spread_bits(uint32_t v) {
+  v &= 0x3ff;
+  v = (v | (v << 16)) & 0x030000ff;
+  v = (v | (v << 8)) & 0x0300f00f;
+  v = (v | (v << 4)) & 0x030c30c3;
+  return (v | (v << 2)) & 0x09249249;
+}
+
+// The rows of Q along a Z-order curve: queries in this order walk the same
+// part of the tree one after another (the tree's nodes stay in cache), which
+// more than pays for the sort. Each query's value does not depend on it.
+std::vector<int> spatial_order(const Eigen::MatrixX3d& Q) {
+  std::vector<int> order(size_t(Q.rows()));
+  for (int i = 0; i < int(Q.rows()); ++i) order[size_t(i)] = i;
+  if (Q.rows() < 2 || !Q.allFinite()) return order;
+  const Eigen::RowVector3d low = Q.colwise().minCoeff();
+  const double extent = (Q.colwise().maxCoeff() - low).maxCoeff();
+  if (!(extent > 0)) return order;
+  std::vector<uint32_t> key(size_t(Q.rows()));
+  for (int i = 0; i < int(Q.rows()); ++i) {
+    uint32_t code = 0;
+    for (int k = 0; k < 3; ++k)
+      code |= spread_bits(uint32_t((Q(i, k) - low(k)) / extent * 1023.0)) << k;
+    key[size_t(i)] = code;
+  }
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return key[size_t(a)] < key[size_t(b)]; });
+  return order;
 }
 
 }  // namespace
@@ -81,6 +135,7 @@ FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d&
   for (int t = 0; t < int(F.rows()); ++t)
     centroids.row(t) = (V.row(F(t, 0)) + V.row(F(t, 1)) + V.row(F(t, 2))) / 3;
   tree.nodes.resize(1);
+  tree.corners.resize(3 * size_t(F.rows()));
   build(tree, centroids, 0, 0, int(F.rows()));
   return tree;
 }
@@ -89,8 +144,10 @@ Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
                                           const Eigen::MatrixX3d& Q) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
   if (tree.nodes.empty()) return w;
+  const std::vector<int> order = spatial_order(Q);
 #pragma omp parallel for schedule(dynamic, 256)
-  for (Eigen::Index i = 0; i < Q.rows(); ++i) {
+  for (Eigen::Index s = 0; s < Q.rows(); ++s) {
+    const Eigen::Index i = order[size_t(s)];
     const Eigen::Vector3d q = Q.row(i);
     double sum = 0;
     int stack[128];
@@ -104,8 +161,18 @@ Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
         // Far: the cluster acts as a dipole of moment area_normal at center.
         sum += node.area_normal.dot(d) / (distance * distance * distance);
       } else if (node.left < 0) {
-        for (int k = node.first; k < node.first + node.count; ++k)
-          sum += triangle_solid_angle(tree.V, tree.F, tree.order[size_t(k)], q);
+        // As triangle_solid_angle per triangle, with each corner's offset once.
+        Eigen::Vector3d offset[kMaxLeafPoints];
+        double length[kMaxLeafPoints];
+        for (int p = 0; p < node.num_points; ++p) {
+          offset[p] = tree.points[size_t(node.first_point + p)] - q;
+          length[p] = offset[p].norm();
+        }
+        for (int k = node.first; k < node.first + node.count; ++k) {
+          const unsigned char* c = &tree.corners[size_t(3 * k)];
+          sum += solid_angle(offset[c[0]], offset[c[1]], offset[c[2]], length[c[0]], length[c[1]],
+                             length[c[2]]);
+        }
       } else {
         stack[size++] = node.left;
         stack[size++] = node.left + 1;

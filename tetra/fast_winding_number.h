@@ -21,12 +21,19 @@ struct FastWindingNumberTree {
     double radius = 0;  ///< largest distance from center to a triangle corner below
     int first = 0;      ///< triangles order[first, first + count)
     int count = 0;
-    int left = -1;  ///< children (-1 for a leaf); right = left + 1
+    int left = -1;        ///< children (-1 for a leaf); right = left + 1
+    int first_point = 0;  ///< leaf: its distinct corners are points[first_point, + num_points)
+    int num_points = 0;
   };
   Eigen::MatrixX3d V;
   Eigen::MatrixX3i F;
   std::vector<int> order;  ///< triangle indices, grouped by node
   std::vector<Node> nodes;
+  /// The leaves' distinct corner positions, leaf after leaf: a query near a
+  /// leaf takes each corner's offset and length once, not once per triangle.
+  std::vector<Eigen::Vector3d> points;
+  /// Per triangle order[k], its corners as indices into its leaf's points (3 per k).
+  std::vector<unsigned char> corners;
   double accuracy = 2;  ///< clusters farther than accuracy * radius use the dipole term
 };
 

@@ -5,9 +5,28 @@
 #include <chrono>
 
 #include "core/errors.h"
+#include "mesh/position_order.h"
 #include "tetra/intersecting_faces.h"
 
 namespace unfold {
+namespace {
+
+// Why TetGen's conforming mode cannot take this surface, known before running
+// it ("" when it may): it refuses any pair of intersecting faces, and it
+// merges vertices at equal positions, which drops a surface vertex.
+std::string not_a_plc(const SurfaceMesh& surface, int num_intersecting_faces) {
+  if (num_intersecting_faces > 0)
+    return "the surface intersects itself (" + std::to_string(num_intersecting_faces) +
+           " face pairs): not a valid PLC, conforming route not tried";
+  const std::vector<int> order = position_order(surface.V);
+  for (size_t k = 1; k < order.size(); ++k)
+    if (surface.V.row(order[k]) == surface.V.row(order[k - 1]))
+      return "vertices " + std::to_string(order[k - 1]) + " and " + std::to_string(order[k]) +
+             " are at one position: not a valid PLC, conforming route not tried";
+  return "";
+}
+
+}  // namespace
 
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, TetReport* report) {
   const auto start = std::chrono::steady_clock::now();
@@ -26,13 +45,20 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
     tets = tetrahedralize_robust(surface, &r);
     r.route = "robust";
   } else if (options.route == "auto") {
-    try {
-      tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
-      r.route = "conforming";
-    } catch (const NumericalError& e) {
-      r.fallback = e.what();
-      LOG(INFO) << "conforming tetrahedralization failed (" << e.what() << "; "
-                << r.num_intersecting_faces << " intersecting face pairs); using the robust route";
+    // Most real scans intersect themselves: TetGen would only refuse them,
+    // after seconds of work (docs/tetrahedralization.md).
+    r.fallback = not_a_plc(surface, r.num_intersecting_faces);
+    if (r.fallback.empty()) {
+      try {
+        tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
+        r.route = "conforming";
+      } catch (const NumericalError& e) {
+        r.fallback = e.what();
+      }
+    }
+    if (r.route.empty()) {
+      LOG(INFO) << "no conforming tetrahedralization (" << r.fallback
+                << "); using the robust route";
       tets = tetrahedralize_robust(surface, &r);
       r.route = "robust";
     }

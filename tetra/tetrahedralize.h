@@ -13,7 +13,9 @@ namespace unfold {
 struct TetOptions {
   /// "conforming": TetGen's boundary-conforming mode (-pY), needs a clean surface;
   /// "robust": Delaunay of surface and interior points carved by the winding number;
-  /// "auto": conforming, and robust when conforming fails.
+  /// "auto": robust directly when the surface is known not to be a valid PLC
+  /// (intersecting faces, vertices at one position), else conforming, and
+  /// robust when conforming fails.
   std::string route = "auto";
   double quality = 2.0;   ///< TetGen -q radius-edge bound (conforming route); 0 turns it off
   double max_volume = 0;  ///< TetGen -a bound on tet volume (conforming route); 0: no bound
@@ -28,7 +30,9 @@ struct TetReport {
   /// pairs of surface triangles that intersect beyond what they share
   /// (intersecting_face_pairs), counted on every route
   int num_intersecting_faces = 0;
-  std::string fallback;  ///< auto: why the conforming route failed ("" if it did not)
+  /// auto: why the conforming route was not used: its error, or why it was not
+  /// tried ("" when it produced the mesh)
+  std::string fallback;
   double seconds = 0;
 };
 

@@ -2,8 +2,11 @@
 // interior grid points, carved by the generalized winding number. It never
 // needs the surface to be a valid piecewise-linear complex, so
 // self-intersections, non-manifold edges and small holes do not stop it.
+#include <glog/logging.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
@@ -94,6 +97,14 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
   return inside;
 }
 
+// Seconds since `start`, and start moved to now: the phases' times for --v=1.
+double lap(std::chrono::steady_clock::time_point* start) {
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - *start).count();
+  *start = now;
+  return seconds;
+}
+
 struct UnionFind {
   std::vector<int> parent;
   explicit UnionFind(int n) : parent(size_t(n)) { std::iota(parent.begin(), parent.end(), 0); }
@@ -107,6 +118,7 @@ struct UnionFind {
 }  // namespace
 
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
+  auto clock = std::chrono::steady_clock::now();
   const int n = int(surface.V.rows());
   const Eigen::MatrixX3i F = triangulate_faces(surface);
   if (n < 4 || F.rows() == 0)
@@ -126,6 +138,7 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   // and a third of the interior points.
   const Eigen::MatrixX3d interior = interior_grid_points(surface.V, tree, orientation, 3 * length);
   const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * length);
+  const double seconds_points = lap(&clock);
   tetgenio in;
   in.firstnumber = 0;
   in.numberofpoints = int(n + interior.rows());
@@ -140,6 +153,7 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   V.topRows(n) = surface.V;  // undo the duplicate separation
   const Eigen::MatrixX4i& T = out.tets;
   const int num_delaunay = int(T.rows());
+  const double seconds_delaunay = lap(&clock);
 
   // Carve: keep a tet when its centroid is inside and none of its edges
   // between two surface vertices leaves the volume. The second test is what
@@ -183,6 +197,8 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
     }
     keep[size_t(t)] = inside;
   }
+
+  const double seconds_carve = lap(&clock);
 
   // Every surface vertex must end up in the one connected tet mesh (else the
   // edge graph falls apart and nothing moves). A surface vertex in no kept tet
@@ -277,6 +293,10 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
     for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(tet(k))];
     ++row;
   }
+  VLOG(1) << "robust route: interior points " << seconds_points << " s, Delaunay ("
+          << in.numberofpoints << " points, " << num_delaunay << " tets) " << seconds_delaunay
+          << " s, carve (" << midpoints.rows() << " edge midpoints) " << seconds_carve
+          << " s, rescue and output " << lap(&clock) << " s";
   if (report) {
     report->num_removed_tets = num_delaunay - num_kept;
     report->num_rescued_tets = rescued;

@@ -1,0 +1,119 @@
+// metrics.compute (--metrics): only the metrics asked for are computed, the
+// others are reported as not computed (null in JSON, empty in results.csv),
+// never as a number; the ones computed are the same as in a full run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "config/options.h"
+#include "core/errors.h"
+#include "core/json.h"
+#include "mesh/write_surface_mesh.h"
+#include "pipeline/batch_run.h"
+#include "pipeline/metrics_json.h"
+#include "pipeline/unfold_surface.h"
+#include "run_app.h"
+#include "test_files.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+using Names = std::vector<std::string>;
+
+TEST(MetricsSelection, FlagAndYamlForms) {
+  const Options defaults;
+  EXPECT_EQ(defaults.metrics, (Names{"E_rig", "E_str", "E_geo"}));
+  EXPECT_EQ(load_options("", {{"metrics.compute", "E_rig,E_str"}}).metrics,
+            (Names{"E_rig", "E_str"}));
+  EXPECT_EQ(load_options("", {{"metrics.compute", "E_geo"}}).metrics, (Names{"E_geo"}));
+  EXPECT_EQ(load_options("", {{"metrics.compute", "none"}}).metrics, Names{});
+  EXPECT_EQ(load_options("", {{"metrics.compute", "all"}}).metrics, defaults.metrics);
+  EXPECT_EQ(load_options("", {{"metrics.compute", "[]"}}).metrics, Names{});
+  // The effective YAML reads back as the same selection, the empty one included.
+  for (const Names& selection : {Names{}, Names{"E_str"}, Names{"E_geo", "E_rig"}}) {
+    Options o;
+    o.metrics = selection;
+    const test::TempDir dir;
+    const std::string path = dir.file("metrics.yaml");
+    std::ofstream(path) << options_to_yaml(o);
+    EXPECT_EQ(load_options(path).metrics, selection);
+  }
+  for (const char* bad : {"E_rig,E_foo", "E_rig,E_rig", "{a: 1}"}) {
+    try {
+      load_options("", {{"metrics.compute", bad}});
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("metrics.compute"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(computes_metric(defaults, "E_geo"));
+  EXPECT_FALSE(computes_metric(load_options("", {{"metrics.compute", "E_rig"}}), "E_geo"));
+}
+
+TEST(MetricsSelection, OnlyTheAskedMetricsAreComputedAndTheyEqualAFullRun) {
+  const SurfaceMesh sphere = test::uv_sphere(10, 16);
+  const Options defaults;
+  const UnfoldResult all = unfold_surface(sphere, defaults);
+  ASSERT_TRUE(std::isfinite(all.metrics.E_rig) && std::isfinite(all.metrics.E_str) &&
+              std::isfinite(all.metrics.E_geo));
+  Options some;
+  some.metrics = {"E_rig", "E_str"};
+  const UnfoldResult r = unfold_surface(sphere, some);
+  EXPECT_EQ(r.metrics.E_rig, all.metrics.E_rig);
+  EXPECT_EQ(r.metrics.E_str, all.metrics.E_str);
+  EXPECT_TRUE(std::isnan(r.metrics.E_geo));
+  EXPECT_EQ(r.metrics.rigidity_per_vertex, all.metrics.rigidity_per_vertex);
+  const std::string json = to_json_text(metrics_document(r, some));
+  EXPECT_NE(json.find("\"E_geo\": null"), std::string::npos) << json.substr(0, 300);
+  EXPECT_NE(json.find("\"metrics_computed\": [\"E_rig\", \"E_str\"]"), std::string::npos);
+
+  Options none;
+  none.metrics = {};
+  const UnfoldResult n = unfold_surface(sphere, none);
+  EXPECT_TRUE(std::isnan(n.metrics.E_rig) && std::isnan(n.metrics.E_str) &&
+              std::isnan(n.metrics.E_geo));
+  EXPECT_EQ(n.metrics.inverted_tets, all.metrics.inverted_tets);  // always counted
+  EXPECT_EQ(n.cascade.positions, all.cascade.positions);          // the unfolding is the same
+}
+
+TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
+  const test::TempDir dir;
+  const std::string path = dir.file("results.csv");
+  const double nan = std::nan("");
+  write_results_csv(path, {{"cat0", "cat", "default", 0.5, 0.25, nan, 1.5, "ok"}});
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,1.5,ok"), std::string::npos) << text.str();
+  const std::vector<BatchRow> rows = read_results_csv(path);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].E_rig, 0.5);
+  EXPECT_TRUE(std::isnan(rows[0].E_geo));
+}
+
+TEST(MetricsSelection, UnfoldFlagWritesNullAndSaysNotComputed) {
+  const test::TempDir dir;
+  const std::string input = dir.file("sphere.off"), json = dir.file("m.json");
+  write_surface_mesh(input, test::uv_sphere(8, 12));
+  const test::AppRun r =
+      test::run_unfold("--input " + input + " --metrics E_rig,E_str --metrics_json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(json);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("\"E_geo\": null"), std::string::npos);
+  EXPECT_EQ(text.str().find("\"E_rig\": null"), std::string::npos);
+  // A rigidity picture needs E_rig: refused before any work.
+  const test::AppRun refused = test::run_unfold("--input " + input +
+                                                " --metrics E_str --render_color rigidity "
+                                                "--render " +
+                                                dir.file("r.png"));
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("E_rig"), std::string::npos) << refused.err;
+}
+
+}  // namespace
+}  // namespace unfold
