@@ -156,15 +156,13 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, Unfold
 // integrate: the cascade's rotation field integrated on the whole tet mesh
 // (docs/method.md, pose invariance). The anchor's unit is lambda_2 of the
 // surface's uniform graph Laplacian: it depends on the connectivity alone, so
-// it is the same for every pose of a shape (the tet mesh's is not).
+// it is the same for every pose of a shape (the tet mesh's is not) and for
+// every arap.weight and arap.weights (the cascade's lambda_2 is not).
 void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options,
                                  UnfoldResult* out) {
   UnfoldResult& result = *out;
-  const double lambda2 =
-      result.lambda2 > 0 && (options.domain == "surface" || result.tets.T.rows() == 0)
-          ? result.lambda2
-          : fiedler_value(graph_laplacian(build_edge_graph(
-                int(result.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)))));
+  const double lambda2 = fiedler_value(graph_laplacian(build_edge_graph(
+      int(result.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)))));
   CascadeResult& c = result.cascade;
   c.positions =
       integrate_rotation_field(graph, result.tets.V, c.positions, lambda2, options.integrate);
