@@ -19,10 +19,11 @@ struct NeighborLengths {
 /// @throws UsageError if P has the wrong size
 NeighborLengths neighbor_lengths(const EdgeGraph& graph, const Eigen::MatrixX3d& P);
 
-/// Single-source shortest paths with the given lengths. Dijkstra with a
-/// bucket queue of width shortest (Dial): no two vertices of one bucket can
-/// improve each other, so the result is exact, in O(m + n + max distance /
-/// shortest); a binary heap when the lengths are too uneven for buckets.
+/// Single-source shortest paths with the given lengths: a bucket queue (Dial)
+/// whose buckets are max(shortest, longest / 32) wide, a vertex relaxed again
+/// whenever a vertex of its own bucket improves it, so the result is exact (the
+/// shortest path's length, summed along the path); a binary heap when the
+/// lengths are too uneven for buckets.
 /// @param lengths  neighbor_lengths(graph, P)
 /// @param source   vertex in [0, n)
 /// @param distance resized to n: the distance to every vertex, +infinity where unreachable

@@ -36,7 +36,7 @@ struct LinearSolverOptions {
   /// many GFlop (the fill of a volume-filling 3D mesh makes it grow ~n^2)
   double direct_max_gflop = 0.3;
   double cg_tolerance = 1e-8;    ///< iterative: relative residual of each global step at least
-  double cg_forcing = 1e-3;      ///< iterative: or this reduction of the warm start's residual
+  double cg_forcing = 1e-2;      ///< iterative: or this reduction of the warm start's residual
   int cg_max_iterations = 1000;  ///< iterative: CG iterations per global step at most
 };
 

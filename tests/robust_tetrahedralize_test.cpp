@@ -64,6 +64,42 @@ TEST(FastWindingNumber, MatchesTheExactSumInsideOutsideAndNearTheSurface) {
   EXPECT_LT(inside, 1800);
 }
 
+TEST(FastWindingNumber, ClassifyDecidesLikeTheAccurateTreeAndRefinesNearOneHalf) {
+  // A surface with a large hole (the faces right of the middle dropped): near
+  // the hole w runs smoothly through 1/2, as at the robust route's holes and
+  // self-intersections; a closed surface jumps from 0 to 1 across itself.
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(2), 32);
+  const Eigen::MatrixX3i all = triangulate_faces(shape);
+  const double middle = 0.5 * (shape.V.col(0).minCoeff() + shape.V.col(0).maxCoeff());
+  std::vector<Eigen::RowVector3i> kept;
+  for (Eigen::Index t = 0; t < all.rows(); ++t)
+    if (shape.V(all(t, 0), 0) < middle) kept.push_back(all.row(t));
+  Eigen::MatrixX3i F(Eigen::Index(kept.size()), 3);
+  for (size_t t = 0; t < kept.size(); ++t) F.row(Eigen::Index(t)) = kept[t];
+  const FastWindingNumberTree tree = fast_winding_number_precomputation(shape.V, F);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const Eigen::RowVector3d low = shape.V.colwise().minCoeff(), high = shape.V.colwise().maxCoeff();
+  Eigen::MatrixX3d Q(4000, 3);
+  for (int i = 0; i < 4000; ++i)
+    for (int k = 0; k < 3; ++k) Q(i, k) = low(k) + (high(k) - low(k)) * unit(random);
+  const Eigen::VectorXd accurate = fast_winding_number_solve(tree, Q);
+  const ClassifyOptions options;
+  const Eigen::VectorXd w = fast_winding_number_classify(tree, Q, options);
+  int refined = 0, coarse = 0;
+  for (int i = 0; i < 4000; ++i) {
+    EXPECT_EQ(w(i) > 0.5, accurate(i) > 0.5) << accurate(i);
+    if (std::abs(w(i) - 0.5) < options.margin) {
+      EXPECT_EQ(w(i), accurate(i));  // evaluated again at the tree's accuracy
+      ++refined;
+    } else {
+      coarse += w(i) != accurate(i);
+    }
+  }
+  EXPECT_GT(refined, 50);
+  EXPECT_GT(coarse, 400);  // the first pass really is the coarser one
+}
+
 TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
   const SurfaceMesh sphere = test::uv_sphere(12, 24, 2.0);
   TetOptions options;

@@ -140,46 +140,74 @@ FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d&
   return tree;
 }
 
+namespace {
+
+// Winding number at q: clusters farther than accuracy * radius by their dipole.
+double winding_number_at(const FastWindingNumberTree& tree, const Eigen::Vector3d& q,
+                         double accuracy) {
+  double sum = 0;
+  int stack[128];
+  int size = 0;
+  stack[size++] = 0;
+  while (size > 0) {
+    const FastWindingNumberTree::Node& node = tree.nodes[size_t(stack[--size])];
+    const Eigen::Vector3d d = node.center - q;
+    const double distance = d.norm();
+    if (distance > accuracy * node.radius) {
+      // Far: the cluster acts as a dipole of moment area_normal at center.
+      sum += node.area_normal.dot(d) / (distance * distance * distance);
+    } else if (node.left < 0) {
+      // As triangle_solid_angle per triangle, with each corner's offset once.
+      Eigen::Vector3d offset[kMaxLeafPoints];
+      double length[kMaxLeafPoints];
+      for (int p = 0; p < node.num_points; ++p) {
+        offset[p] = tree.points[size_t(node.first_point + p)] - q;
+        length[p] = offset[p].norm();
+      }
+      for (int k = node.first; k < node.first + node.count; ++k) {
+        const unsigned char* c = &tree.corners[size_t(3 * k)];
+        sum += solid_angle(offset[c[0]], offset[c[1]], offset[c[2]], length[c[0]], length[c[1]],
+                           length[c[2]]);
+      }
+    } else {
+      stack[size++] = node.left;
+      stack[size++] = node.left + 1;
+    }
+  }
+  return sum / (4 * M_PI);
+}
+
+// Fills w(i) for the rows i of Q listed in `rows` (in that order: a Z-order
+// keeps the tree's nodes in cache from one query to the next).
+void solve_rows(const FastWindingNumberTree& tree, const Eigen::MatrixX3d& Q,
+                const std::vector<int>& rows, double accuracy, Eigen::VectorXd* w) {
+  if (tree.nodes.empty()) return;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (Eigen::Index s = 0; s < Eigen::Index(rows.size()); ++s) {
+    const int i = rows[size_t(s)];
+    (*w)(i) = winding_number_at(tree, Q.row(i), accuracy);
+  }
+}
+
+}  // namespace
+
 Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
                                           const Eigen::MatrixX3d& Q) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
-  if (tree.nodes.empty()) return w;
+  solve_rows(tree, Q, spatial_order(Q), tree.accuracy, &w);
+  return w;
+}
+
+Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
+                                             const Eigen::MatrixX3d& Q,
+                                             const ClassifyOptions& options) {
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
   const std::vector<int> order = spatial_order(Q);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (Eigen::Index s = 0; s < Q.rows(); ++s) {
-    const Eigen::Index i = order[size_t(s)];
-    const Eigen::Vector3d q = Q.row(i);
-    double sum = 0;
-    int stack[128];
-    int size = 0;
-    stack[size++] = 0;
-    while (size > 0) {
-      const FastWindingNumberTree::Node& node = tree.nodes[size_t(stack[--size])];
-      const Eigen::Vector3d d = node.center - q;
-      const double distance = d.norm();
-      if (distance > tree.accuracy * node.radius) {
-        // Far: the cluster acts as a dipole of moment area_normal at center.
-        sum += node.area_normal.dot(d) / (distance * distance * distance);
-      } else if (node.left < 0) {
-        // As triangle_solid_angle per triangle, with each corner's offset once.
-        Eigen::Vector3d offset[kMaxLeafPoints];
-        double length[kMaxLeafPoints];
-        for (int p = 0; p < node.num_points; ++p) {
-          offset[p] = tree.points[size_t(node.first_point + p)] - q;
-          length[p] = offset[p].norm();
-        }
-        for (int k = node.first; k < node.first + node.count; ++k) {
-          const unsigned char* c = &tree.corners[size_t(3 * k)];
-          sum += solid_angle(offset[c[0]], offset[c[1]], offset[c[2]], length[c[0]], length[c[1]],
-                             length[c[2]]);
-        }
-      } else {
-        stack[size++] = node.left;
-        stack[size++] = node.left + 1;
-      }
-    }
-    w(i) = sum / (4 * M_PI);
-  }
+  solve_rows(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
+  std::vector<int> uncertain;
+  for (int i : order)
+    if (std::abs(std::abs(w(i)) - 0.5) < options.margin) uncertain.push_back(i);
+  solve_rows(tree, Q, uncertain, tree.accuracy, &w);
   return w;
 }
 

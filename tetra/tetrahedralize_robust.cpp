@@ -90,7 +90,7 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
       }
   Eigen::MatrixX3d Q(candidates.size(), 3);
   for (size_t k = 0; k < candidates.size(); ++k) Q.row(Eigen::Index(k)) = candidates[k];
-  const Eigen::VectorXd w = orientation * fast_winding_number_solve(tree, Q);
+  const Eigen::VectorXd w = orientation * fast_winding_number_classify(tree, Q);
   Eigen::MatrixX3d inside((w.array() > kInside).count(), 3);
   for (Eigen::Index k = 0, row = 0; k < Q.rows(); ++k)
     if (w(k) > kInside) inside.row(row++) = Q.row(k);
@@ -162,7 +162,7 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   Eigen::MatrixX3d centroids(num_delaunay, 3);
   for (int t = 0; t < num_delaunay; ++t)
     centroids.row(t) = (V.row(T(t, 0)) + V.row(T(t, 1)) + V.row(T(t, 2)) + V.row(T(t, 3))) / 4;
-  const Eigen::VectorXd w = orientation * fast_winding_number_solve(tree, centroids);
+  Eigen::VectorXd w = orientation * fast_winding_number_classify(tree, centroids);
   std::unordered_set<uint64_t> surface_edges;
   for (Eigen::Index t = 0; t < F.rows(); ++t)
     for (int k = 0; k < 3; ++k) surface_edges.insert(edge_key(F(t, k), F(t, (k + 1) % 3)));
@@ -186,7 +186,7 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   Eigen::MatrixX3d midpoints(tested_a.size(), 3);
   for (size_t k = 0; k < tested_a.size(); ++k)
     midpoints.row(Eigen::Index(k)) = (V.row(tested_a[k]) + V.row(tested_b[k])) / 2;
-  const Eigen::VectorXd w_mid = orientation * fast_winding_number_solve(tree, midpoints);
+  const Eigen::VectorXd w_mid = orientation * fast_winding_number_classify(tree, midpoints);
   std::vector<char> keep(size_t(num_delaunay), 0);
   for (int t = 0; t < num_delaunay; ++t) {
     if (w(t) <= kInside || degenerate[size_t(t)]) continue;
@@ -210,9 +210,26 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   std::vector<int> best(size_t(n), -1);
   std::vector<char> used(size_t(V.rows()), 0);
   for (int t = 0; t < num_delaunay; ++t)
+    for (int k = 0; k < 4; ++k)
+      if (keep[size_t(t)]) used[size_t(T(t, k))] = 1;
+  // The rescue of a vertex in no kept tet picks its most-inside tet: its tets
+  // get the accurate w (classify's coarse one is only sure to be on the right
+  // side of 1/2), so the choice is the one fast_winding_number_solve makes.
+  std::vector<int> ranked;
+  for (int t = 0; t < num_delaunay; ++t)
+    for (int k = 0; k < 4; ++k)
+      if (T(t, k) < n && !used[size_t(T(t, k))]) {
+        ranked.push_back(t);
+        break;
+      }
+  Eigen::MatrixX3d ranked_centroids(ranked.size(), 3);
+  for (size_t k = 0; k < ranked.size(); ++k)
+    ranked_centroids.row(Eigen::Index(k)) = centroids.row(ranked[k]);
+  const Eigen::VectorXd ranked_w = orientation * fast_winding_number_solve(tree, ranked_centroids);
+  for (size_t k = 0; k < ranked.size(); ++k) w(ranked[k]) = ranked_w(Eigen::Index(k));
+  for (int t = 0; t < num_delaunay; ++t)
     for (int k = 0; k < 4; ++k) {
       const int v = T(t, k);
-      if (keep[size_t(t)]) used[size_t(v)] = 1;
       if (v < n && !degenerate[size_t(t)] && (best[size_t(v)] < 0 || w(t) > w(best[size_t(v)])))
         best[size_t(v)] = t;
     }
