@@ -18,6 +18,7 @@
 #include "pipeline/unfold_components.h"
 #include "solvers/arap_solve.h"
 #include "solvers/beta_schedule.h"
+#include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/integrate_rotation_field.h"
 #include "solvers/local_global.h"
@@ -167,8 +168,7 @@ void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options,
   c.positions =
       integrate_rotation_field(graph, result.tets.V, c.positions, lambda2, options.integrate);
   c.edge_ratio = edge_ratio(graph, result.tets.V, c.positions);
-  const auto& band = options.cascade.edge_ratio_band;
-  c.reached_band = c.edge_ratio >= band[0] && c.edge_ratio <= band[1];
+  c.reached_band = in_band(c.edge_ratio, options.cascade.edge_ratio_band);
 }
 
 // LSMDS has no cascade: one stage, iterations = Guttman transforms, energy =

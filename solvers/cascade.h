@@ -26,6 +26,12 @@ struct CascadeOptions {
   int anderson = 0;  ///< Anderson acceleration window of local-global; 0: plain iterations
 };
 
+/// Whether an edge ratio is inside a band (ends included): the stopping test
+/// of Algorithm 1, shared by the backends and the pipeline's later stages.
+inline bool in_band(double edge_ratio, const std::array<double, 2>& band) {
+  return edge_ratio >= band[0] && edge_ratio <= band[1];
+}
+
 struct IterationRecord {
   int iteration;  ///< 1-based over the whole run
   int cascade;    ///< 1-based

@@ -145,7 +145,7 @@ bool CeresBackend::run_stage(const StageOptions& options, int cascade, Eigen::Ma
   *previous_energy = summary.final_cost;
   // Each cascade is solved to convergence; the band is checked at its end.
   const double delta = edge_ratio(*problem_.graph, problem_.rest, *Q);
-  return delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1];
+  return in_band(delta, options.edge_ratio_band);
 }
 
 }  // namespace unfold

@@ -148,9 +148,6 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     return total_energy(problem, *Q, R_, data_.beta);
   };
   if (accelerate) level = fit_and_measure();
-  const auto in_band = [&](double delta) {
-    return delta >= options.edge_ratio_band[0] && delta <= options.edge_ratio_band[1];
-  };
   for (int i = 1;; ++i) {
     if (!accelerate) fit_rotations(problem, *Q, data_.beta, &R_, &covariances_);
     const Eigen::MatrixX3d x = accelerate ? *Q : Eigen::MatrixX3d();
@@ -182,10 +179,10 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     history->push_back({iteration, cascade, data_.beta, energy, delta});
     VLOG(1) << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
             << " energy " << energy << " edge ratio " << delta;
-    if (options.break_in_band && in_band(delta)) return true;
+    if (options.break_in_band && in_band(delta, options.edge_ratio_band)) return true;
     const bool converged = std::abs(energy / *previous_energy - 1.0) < options.epsilon;
     *previous_energy = energy;
-    if (converged || i >= options.max_iterations) return in_band(delta);
+    if (converged || i >= options.max_iterations) return in_band(delta, options.edge_ratio_band);
   }
 }
 

@@ -13,7 +13,8 @@ namespace unfold {
 namespace {
 
 double rms_radius(const Eigen::MatrixX3d& V) {
-  return std::sqrt((V.rowwise() - V.colwise().mean()).rowwise().squaredNorm().mean());
+  const Eigen::RowVector3d centroid = V.colwise().mean();
+  return std::sqrt((V.rowwise() - centroid).rowwise().squaredNorm().mean());
 }
 
 class PipelineWolf : public ::testing::TestWithParam<const char*> {};

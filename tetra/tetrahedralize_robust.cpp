@@ -212,21 +212,25 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   for (int t = 0; t < num_delaunay; ++t)
     for (int k = 0; k < 4; ++k)
       if (keep[size_t(t)]) used[size_t(T(t, k))] = 1;
-  // The rescue of a vertex in no kept tet picks its most-inside tet: its tets
-  // get the accurate w (classify's coarse one is only sure to be on the right
-  // side of 1/2), so the choice is the one fast_winding_number_solve makes.
-  std::vector<int> ranked;
+  // The rescues rank tets by w, and classify's coarse w is only sure to be on
+  // the right side of 1/2: the tets they rank get the accurate w, so they pick
+  // the tets fast_winding_number_solve's values would.
+  const auto make_accurate = [&](const std::vector<int>& ranked) {
+    Eigen::MatrixX3d ranked_centroids(ranked.size(), 3);
+    for (size_t k = 0; k < ranked.size(); ++k)
+      ranked_centroids.row(Eigen::Index(k)) = centroids.row(ranked[k]);
+    const Eigen::VectorXd accurate =
+        orientation * fast_winding_number_solve(tree, ranked_centroids);
+    for (size_t k = 0; k < ranked.size(); ++k) w(ranked[k]) = accurate(Eigen::Index(k));
+  };
+  std::vector<int> ranked;  // the tets of the vertices in no kept tet
   for (int t = 0; t < num_delaunay; ++t)
     for (int k = 0; k < 4; ++k)
       if (T(t, k) < n && !used[size_t(T(t, k))]) {
         ranked.push_back(t);
         break;
       }
-  Eigen::MatrixX3d ranked_centroids(ranked.size(), 3);
-  for (size_t k = 0; k < ranked.size(); ++k)
-    ranked_centroids.row(Eigen::Index(k)) = centroids.row(ranked[k]);
-  const Eigen::VectorXd ranked_w = orientation * fast_winding_number_solve(tree, ranked_centroids);
-  for (size_t k = 0; k < ranked.size(); ++k) w(ranked[k]) = ranked_w(Eigen::Index(k));
+  make_accurate(ranked);
   for (int t = 0; t < num_delaunay; ++t)
     for (int k = 0; k < 4; ++k) {
       const int v = T(t, k);
@@ -269,6 +273,7 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
     std::vector<int> carved;
     for (int t = 0; t < num_delaunay; ++t)
       if (!keep[size_t(t)] && !degenerate[size_t(t)]) carved.push_back(t);
+    make_accurate(carved);
     std::stable_sort(carved.begin(), carved.end(), [&](int s, int t) { return w(s) > w(t); });
     for (size_t k = 0; k < carved.size() && num_components > 1; ++k) {
       const int t = carved[k];
