@@ -272,10 +272,17 @@ void validate_options(const Options& o) {
           "dpmu needs arap.weight: 0 and edge_length.weight > 0 (see configs/dpmu.yaml)");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
           "must be uniform or cotangent, got '" + e.arap_weights + "'");
+  // The surface domain's energy lives on the triangles' edges: no tets to take
+  // cotangent weights or volumes from.
+  require(o.domain != "surface" || e.arap_weights == "uniform", "arap.weights",
+          "is cotangent, but domain: surface has no tets to take cotangent weights from (use "
+          "uniform)");
   require(std::isfinite(e.user_pairs_gamma) && e.user_pairs_gamma > 0, "user_pairs.gamma",
           "must be a positive finite number");
   require(std::isfinite(e.volume_weight) && e.volume_weight >= 0, "volume.weight",
           "must be a finite number >= 0");
+  require(o.domain != "surface" || e.volume_weight == 0, "volume.weight",
+          "must be 0 with domain: surface, which has no tets to keep the volume of");
   if (o.method != "lsmds") {
     const std::string refused = why_backend_cannot_run(o.method, probe_terms(e));
     require(refused.empty(), "method", "is " + o.method + ", but " + refused);

@@ -18,8 +18,12 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const E
   std::vector<double> weights;
   if (options.arap_weights == "uniform")
     weights.assign(size_t(graph->num_edges()), 1.0);
-  else if (options.arap_weights == "cotangent")
+  else if (options.arap_weights == "cotangent" && tets.T.rows() > 0)
     weights = cotangent_weights(tets.V, tets.T, *graph);
+  else if (options.arap_weights == "cotangent")
+    throw UsageError(
+        "config key 'arap.weights' is cotangent, but there are no tets to take cotangent "
+        "weights from (surface edge graph); use uniform");
   else
     throw UsageError("config key 'arap.weights' must be uniform or cotangent, got '" +
                      options.arap_weights + "'");

@@ -81,6 +81,11 @@ TEST(Config, ErrorsNameTheKey) {
   expect_usage_error("cascade:\n  edge_ratio_band: [1.1, 0.9]\n", "'cascade.edge_ratio_band'");
   expect_usage_error("cascade: [1, 2\n", "invalid YAML");
   expect_usage_error("- 1\n- 2\n", "not a mapping");
+  // The surface domain has no tets: no cotangent weights, no volumes.
+  expect_usage_error("domain: surface\narap:\n  weights: cotangent\n",
+                     "'arap.weights' is cotangent, but domain: surface");
+  expect_usage_error("domain: surface\nmethod: ceres\nvolume:\n  weight: 1.0\n",
+                     "'volume.weight' must be 0 with domain: surface");
 }
 
 TEST(Config, MissingFileAndBadOverride) {
