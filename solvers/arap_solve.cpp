@@ -18,7 +18,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     throw UsageError("arap_solve: need P and Q with one row per graph vertex and 1 to n held");
   if (options.max_iterations < 0 || !(options.tolerance >= 0) || !(options.anchor >= 0))
     throw UsageError("arap_solve: max_iterations, tolerance and anchor must be >= 0");
-  if (m == 0) return Q;
+  if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
   // to held vertices go to the right side.
   Eigen::SparseMatrix<double> L = graph_laplacian(graph).bottomRightCorner(m, m);

@@ -32,7 +32,8 @@ struct ArapSolveOptions {
 /// @param Q     n x 3: held rows and the free rows' start (and anchor)
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
 ///         max_iterations < 0, tolerance < 0 or anchor < 0
-/// @throws NumericalError if some free vertex has no path to a held one
+/// @throws NumericalError if some free vertex has no path to a held one (checked
+///         only when there is a step to take: max_iterations > 0)
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
                             const ArapSolveOptions& options = {});
 
