@@ -19,16 +19,21 @@ StretchError stretch_error(const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
   if (n <= options.exact_limit) {
     std::vector<double> row_sum(size_t(n), 0.0);
     std::vector<int64_t> row_skipped(size_t(n), 0);
+    // Per row as Eigen arrays: (d' - d) / d = sqrt(d'^2 / d^2) - 1 takes one
+    // vectorized square root and division per pair.
 #pragma omp parallel for schedule(dynamic, 16)
-    for (int64_t i = 0; i < n - 1; ++i)
-      for (int64_t j = i + 1; j < n; ++j) {
-        const double d = (P.row(i) - P.row(j)).norm();
-        if (d == 0) {
-          ++row_skipped[size_t(i)];
-          continue;
-        }
-        row_sum[size_t(i)] += ((Q.row(i) - Q.row(j)).norm() - d) / d;
-      }
+    for (int64_t i = 0; i < n - 1; ++i) {
+      const Eigen::Index m = n - 1 - i;
+      const auto rest = [&](const Eigen::MatrixX3d& X, int c) {
+        return (X.col(c).segment(i + 1, m).array() - X(i, c)).square();
+      };
+      const Eigen::ArrayXd d2 = rest(P, 0) + rest(P, 1) + rest(P, 2);
+      const auto ratio = ((rest(Q, 0) + rest(Q, 1) + rest(Q, 2)) / d2).sqrt();
+      const int64_t zeros = (d2 == 0).count();
+      row_skipped[size_t(i)] = zeros;
+      row_sum[size_t(i)] = zeros == 0 ? ratio.sum() - double(m)
+                                      : (d2 > 0).select(ratio - 1.0, 0.0).sum();
+    }
     double sum = 0;
     for (int64_t i = 0; i < n; ++i) {
       sum += row_sum[size_t(i)];
