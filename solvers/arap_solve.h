@@ -22,16 +22,22 @@ struct ArapSolveOptions {
   /// weight a of a |q_i - q_i^start|^2 per free vertex, in units of the
   /// uniform graph Laplacian (whose diagonal is the degree); 0: none
   double anchor = 0;
+  /// Anderson acceleration window of the steps (0: plain steps). An
+  /// extrapolated step is kept only if it lowers the energy.
+  int anderson = 5;
 };
 
-/// Minimises sum over edges |q_i - q_j - (R_i + R_j)/2 (p_i - p_j)|^2 (plus the
-/// anchor) over the free rows of Q by alternating best rotations R (Kabsch,
-/// per vertex) and one sparse solve; returns Q with the free rows moved.
+/// Minimises the ARAP energy 1/2 sum_i sum_{j in N_i} |q_i - q_j - R_i (p_i - p_j)|^2
+/// (plus the anchor) over the free rows of Q by alternating best rotations R
+/// (Kabsch, per vertex) and one sparse solve; returns Q with the free rows
+/// moved. Stops after max_iterations steps, when a plain step moves every free
+/// vertex by less than the tolerance, or when a plain step no longer lowers the
+/// energy (then the iterate before it is returned).
 /// @param graph the edge graph (n vertices)
 /// @param P     rest positions, n x 3
 /// @param Q     n x 3: held rows and the free rows' start (and anchor)
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
-///         max_iterations < 0, tolerance < 0 or anchor < 0
+///         max_iterations < 0, tolerance < 0, anchor < 0 or anderson < 0
 /// @throws NumericalError if some free vertex has no path to a held one (checked
 ///         only when there is a step to take: max_iterations > 0)
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,

@@ -16,7 +16,7 @@ Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::M
         "integrate_rotation_field: iterations, anchor and tolerance must be >= 0, lambda_2 > 0");
   Eigen::MatrixX3d X = Q;
   if (options.iterations > 0) {
-    X = arap_solve(graph, P, std::move(X), {1, 1, 0.0, 0.0});
+    X = arap_solve(graph, P, std::move(X), {1, 1, 0.0, 0.0, 0});
     X = arap_solve(graph, P, std::move(X),
                    {1, options.iterations - 1, options.tolerance, options.anchor * lambda2});
   }

@@ -117,6 +117,49 @@ TEST(ArapSolve, AnAnchorKeepsTheStart) {
             0.5 * arap_energy(graph, g.mesh.V, bent));
 }
 
+// The energy arap_solve lowers: rotations averaged over each edge, plus the anchor.
+double anchored_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
+                       const Eigen::MatrixX3d& start, int num_fixed, double anchor) {
+  Rotations R;
+  best_rotations(graph, P, Q, &R);
+  double e = 0;
+  for (int i = 0; i < graph.num_vertices; ++i)
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
+      const int j = graph.neighbors[size_t(k)];
+      const Eigen::Vector3d v = 0.5 * (R[size_t(i)] + R[size_t(j)]) * (P.row(i) - P.row(j)).transpose();
+      e += 0.5 * (Q.row(i) - Q.row(j) - v.transpose()).squaredNorm();
+    }
+  const int m = int(Q.rows()) - num_fixed;
+  return e + anchor * (Q.bottomRows(m) - start.bottomRows(m)).squaredNorm();
+}
+
+// Anderson acceleration changes how the steps get there, not where: from a
+// bent, noisy grid, accelerated and plain steps end at the same shape, and
+// neither ends above the energy it started from.
+TEST(ArapSolve, AcceleratedStepsEndWhereThePlainStepsDo) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  Eigen::MatrixX3d bent = g.mesh.V;
+  for (int i = 0; i < bent.rows(); ++i) {
+    const double a = 0.2 * g.mesh.V(i, 0), x = g.mesh.V(i, 0), z = g.mesh.V(i, 2);
+    bent(i, 0) = std::cos(a) * x - std::sin(a) * z;
+    bent(i, 2) = std::sin(a) * x + std::cos(a) * z;
+  }
+  bent += 0.05 * Eigen::MatrixX3d::Random(bent.rows(), 3);
+  ArapSolveOptions options = held(1);
+  options.anchor = 0.1;
+  options.max_iterations = 5000;
+  options.tolerance = 1e-9;
+  options.anderson = 0;
+  const Eigen::MatrixX3d plain = arap_solve(graph, g.mesh.V, bent, options);
+  options.anderson = 5;
+  const Eigen::MatrixX3d accelerated = arap_solve(graph, g.mesh.V, bent, options);
+  EXPECT_LT((plain - accelerated).rowwise().norm().maxCoeff(), 1e-4);
+  const double before = anchored_energy(graph, g.mesh.V, bent, bent, 1, 0.1);
+  EXPECT_LT(anchored_energy(graph, g.mesh.V, plain, bent, 1, 0.1), 0.5 * before);
+  EXPECT_LT(anchored_energy(graph, g.mesh.V, accelerated, bent, 1, 0.1), 0.5 * before);
+}
+
 TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
@@ -124,6 +167,9 @@ TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
   ArapSolveOptions negative = held(1);
   negative.anchor = -1;
   EXPECT_THROW(arap_solve(graph, g.mesh.V, g.mesh.V, negative), UsageError);
+  ArapSolveOptions no_window = held(1);
+  no_window.anderson = -1;
+  EXPECT_THROW(arap_solve(graph, g.mesh.V, g.mesh.V, no_window), UsageError);
   EXPECT_THROW(arap_solve(graph, g.mesh.V, g.mesh.V.topRows(10), held(5)), UsageError);
   EXPECT_EQ(arap_solve(graph, g.mesh.V, g.mesh.V, held(int(g.mesh.V.rows()))), g.mesh.V);
 }
