@@ -93,18 +93,20 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
         plain = true;
       }
     }
+    const bool last = step <= options.tolerance * radius || it == options.max_iterations;
     if (plain) {
       Q.bottomRows(m) = free;
+      if (last) break;  // no rotations needed after it
       energy = fit(Q);
-    }
-    // A plain step that does not lower the energy: converged as far as
-    // rounding lets it tell; keep the lower iterate.
-    if (plain && !(energy < level)) {
-      Q.bottomRows(m) = x;
-      break;
+      // A plain step that does not lower the energy: converged as far as
+      // rounding lets it tell; keep the lower iterate.
+      if (!(energy < level)) {
+        Q.bottomRows(m) = x;
+        break;
+      }
     }
     level = energy;
-    if (step <= options.tolerance * radius) break;
+    if (last) break;
   }
   VLOG(1) << "ARAP: " << it << " steps, " << m << " free vertices, anchor " << options.anchor
           << ", Anderson " << options.anderson << ", energy " << level;
