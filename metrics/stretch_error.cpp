@@ -31,8 +31,8 @@ StretchError stretch_error(const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
       const auto ratio = ((rest(Q, 0) + rest(Q, 1) + rest(Q, 2)) / d2).sqrt();
       const int64_t zeros = (d2 == 0).count();
       row_skipped[size_t(i)] = zeros;
-      row_sum[size_t(i)] = zeros == 0 ? ratio.sum() - double(m)
-                                      : (d2 > 0).select(ratio - 1.0, 0.0).sum();
+      row_sum[size_t(i)] =
+          zeros == 0 ? ratio.sum() - double(m) : (d2 > 0).select(ratio - 1.0, 0.0).sum();
     }
     double sum = 0;
     for (int64_t i = 0; i < n; ++i) {
