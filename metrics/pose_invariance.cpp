@@ -8,18 +8,26 @@
 namespace unfold {
 
 double surface_area(const SurfaceMesh& mesh) {
-  const Eigen::MatrixX3i F = triangulate_faces(mesh);
+  return surface_area(mesh.V, triangulate_faces(mesh));
+}
+
+double surface_area(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
   double area = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(F(f, 0)), b = mesh.V.row(F(f, 1)), c = mesh.V.row(F(f, 2));
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
     area += 0.5 * (b - a).cross(c - a).norm();
   }
   return area;
 }
 
-double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B, double area) {
-  if (!(area > 0)) throw UsageError("pose_distance: the surface area must be positive");
-  return aligned_distance(A, B) / std::sqrt(area);
+double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
+                     const Eigen::MatrixX3i& F) {
+  if (A.rows() != B.rows()) throw UsageError("pose_distance: the two poses differ in size");
+  if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= A.rows()))
+    throw UsageError("pose_distance: a triangle names a vertex out of range");
+  const double area_a = surface_area(A, F), area_b = surface_area(B, F);
+  if (!(area_a > 0 && area_b > 0)) throw UsageError("pose_distance: a surface has zero area");
+  return aligned_distance(A / std::sqrt(area_a), B / std::sqrt(area_b));
 }
 
 Eigen::MatrixX3d transfer_by_nearest_point(const Eigen::MatrixX3d& rest,

@@ -12,9 +12,16 @@ namespace unfold {
 /// Total area of the (fan-triangulated) faces.
 double surface_area(const SurfaceMesh& mesh);
 
-/// Mean |a_k - (R b_k + t)| after Procrustes (rows corresponding, no scale),
-/// divided by sqrt(area). @throws UsageError if the sizes differ, n == 0 or area <= 0
-double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B, double area);
+/// Total area of the triangles F over the vertex positions V.
+double surface_area(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
+/// The pose distance of issue 16: A and B (one surface in two poses: rows
+/// corresponding, triangles F) each scaled to unit surface area, then the mean
+/// |a_k - (R b_k + t)| after Procrustes (no further scale). Zero for two forms
+/// that differ by a rigid motion and a uniform scale.
+/// @throws UsageError if the sizes differ, n == 0 or a surface has zero area
+double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
+                     const Eigen::MatrixX3i& F);
 
 /// Carries a deformation to other points: each target point takes the moved
 /// position of its nearest rest point (for canonical forms of a simplified

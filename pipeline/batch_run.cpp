@@ -413,14 +413,14 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
   const size_t n = meshes.size();
   std::vector<std::string> names(n), classes(n);
   std::vector<SurfaceMesh> inputs(n);
-  std::vector<double> areas(n);
+  std::vector<Eigen::MatrixX3i> faces(n);
   std::vector<bool> readable(n, true);  // an unreadable input is in no table (its rows say why)
   for (size_t i = 0; i < n; ++i) {
     names[i] = stem(meshes[i]);
     classes[i] = shape_class(names[i]);
     try {
       inputs[i] = read_surface_mesh(meshes[i]);
-      areas[i] = surface_area(inputs[i]);
+      faces[i] = triangulate_faces(inputs[i]);
     } catch (const InputError&) {
       readable[i] = false;
     }
@@ -491,9 +491,8 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
         for (size_t j = i + 1; j < n; ++j)
           if (classes[i] == c && classes[j] == c && on_input[m][i] && on_input[m][j] &&
               inputs[i].V.rows() == inputs[j].V.rows()) {
-            const double area = 0.5 * (areas[i] + areas[j]);
-            const double raw = pose_distance(inputs[i].V, inputs[j].V, area);
-            const double d = pose_distance(*on_input[m][i], *on_input[m][j], area);
+            const double raw = pose_distance(inputs[i].V, inputs[j].V, faces[i]);
+            const double d = pose_distance(*on_input[m][i], *on_input[m][j], faces[i]);
             const double ratio = raw > 0 ? d / raw : 1.0;
             pose_pairs << c << ',' << labels[m] << ',' << names[i] << ',' << names[j] << ',' << raw
                        << ',' << d << ',' << ratio << '\n';
@@ -504,12 +503,14 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
         pose << c << ',' << labels[m] << ',' << sum / pairs << ',' << ratio_sum / pairs << ','
              << ratio_max << ',' << pairs << '\n';
         std::vector<PosePanel> panels;
+        const Eigen::MatrixX3i& class_faces = faces[first_of_class.at(c)];
         for (size_t i = 0; i < n; ++i)
           if (classes[i] == c && on_input[m][i] &&
               inputs[i].V.rows() == inputs[first_of_class.at(c)].V.rows())
-            panels.push_back({names[i], *on_input[m][i], std::sqrt(areas[i])});
+            panels.push_back(
+                {names[i], *on_input[m][i], std::sqrt(surface_area(*on_input[m][i], class_faces))});
         write_png(output_dir + "/poses_" + c + "_" + labels[m] + ".png",
-                  render_poses(panels, triangulate_faces(inputs[first_of_class.at(c)]), labels[m]));
+                  render_poses(panels, class_faces, labels[m]));
       }
     }
   write_file_atomically(output_dir + "/retrieval.csv",

@@ -14,7 +14,7 @@ namespace unfold {
 struct PosePanel {
   std::string title;   ///< the pose's name
   Eigen::MatrixX3d V;  ///< its form (raw pose or canonical form), vertices in shared order
-  double scale = 1;    ///< sqrt(surface area of the input pose): forms are divided by it
+  double scale = 1;    ///< sqrt(surface area of the form): forms are divided by it
 };
 
 /// Side and top views of every panel's form after the best rigid alignment

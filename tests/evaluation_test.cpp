@@ -51,16 +51,22 @@ TEST(Retrieval, NearestPointDistanceIsSymmetricAndZeroOnlyForTheSameSet) {
   EXPECT_GT(nearest_point_distance(A, B), 0);
 }
 
-TEST(PoseInvariance, ZeroForARigidMotionAndScaledBySqrtArea) {
+TEST(PoseInvariance, ZeroForARigidMotionAndAScaleAndMeasuredAtUnitArea) {
   const SurfaceMesh s = test::uv_sphere(8, 12, 2.0);
+  const Eigen::MatrixX3i F = triangulate_faces(s);
   const double area = surface_area(s);
   EXPECT_NEAR(area, 4 * M_PI * 4, 0.1 * 4 * M_PI * 4);  // a coarse sphere of radius 2
-  EXPECT_NEAR(pose_distance(s.V, moved(s.V, 1.0), area), 0, 1e-12);
-  const Eigen::MatrixX3d shifted = s.V.rowwise() + Eigen::RowVector3d(0, 0, 0);
-  Eigen::MatrixX3d bumped = shifted;
+  EXPECT_DOUBLE_EQ(surface_area(3 * s.V, F), 9 * area);
+  EXPECT_NEAR(pose_distance(s.V, moved(s.V, 1.0), F), 0, 1e-12);
+  EXPECT_NEAR(pose_distance(s.V, 2.5 * moved(s.V, 1.0), F), 0, 1e-12);
+  // A non-rigid change is seen, and the same at any common scale.
+  Eigen::MatrixX3d bumped = s.V;
   bumped(0, 0) += 1.0;
-  EXPECT_GT(pose_distance(s.V, bumped, area), 0);
-  EXPECT_THROW(pose_distance(s.V, s.V, 0), UsageError);
+  const double d = pose_distance(s.V, bumped, F);
+  EXPECT_GT(d, 1e-3);
+  EXPECT_NEAR(pose_distance(10 * s.V, 10 * bumped, F), d, 1e-12);
+  EXPECT_THROW(pose_distance(s.V, s.V.topRows(3), F), UsageError);
+  EXPECT_THROW(pose_distance(Eigen::MatrixX3d::Zero(s.V.rows(), 3), s.V, F), UsageError);
   EXPECT_EQ(transfer_by_nearest_point(s.V, 2 * s.V, s.V), 2 * s.V);
 }
 

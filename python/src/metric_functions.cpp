@@ -44,8 +44,10 @@ void def_metric_functions(py::module_& m) {
       py::arg("V"), py::arg("F"), release());
   m.def(
       "pose_distance",
-      [](const Vertices& A, const Vertices& B, double area) { return pose_distance(A, B, area); },
-      py::arg("A"), py::arg("B"), py::arg("area"), release());
+      [](const Vertices& A, const Vertices& B, const Elements& F) {
+        return pose_distance(A, B, triangulate_faces(make_surface(A, F)));
+      },
+      py::arg("A"), py::arg("B"), py::arg("F"), release());
   m.def(
       "retrieval_distance",
       [](const Vertices& A, const Vertices& B, int sample_points, int icp_iterations) {

@@ -43,8 +43,11 @@ def test_pose_and_retrieval_distances(small_result, demo):
     assert area > 0
     assert metrics.surface_area(2 * V, r.faces) == pytest.approx(4 * area)
     moved = V @ rotation(1.1).T + 5.0
-    assert metrics.pose_distance(V, moved, area) == pytest.approx(0, abs=1e-9)
-    assert metrics.pose_distance(V, r.rest_tet_vertices[: len(V)], area) > 0.01
+    assert metrics.pose_distance(V, moved, r.faces) == pytest.approx(0, abs=1e-9)
+    assert metrics.pose_distance(V, 3 * moved, r.faces) == pytest.approx(0, abs=1e-9)
+    assert metrics.pose_distance(V, r.rest_tet_vertices[: len(V)], r.faces) > 0.01
+    with pytest.raises(unfold.ConfigError):  # the library's size check
+        metrics.pose_distance(V, V[:-1], r.faces)
     assert metrics.retrieval_distance(V, moved) == pytest.approx(0, abs=1e-6)
     other = unfold.demo_shape("2", resolution=40)[0]
     assert metrics.retrieval_distance(V, other, sample_points=200) > 0

@@ -60,10 +60,12 @@ def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
     return _core.surface_area(*_arrays.surface(V, F))
 
 
-def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, area: float) -> float:
-    """Mean vertex distance of A and B (corresponding rows) after the best rigid
-    alignment, divided by sqrt(area) (e.g. surface_area of the input pose)."""
-    return _core.pose_distance(_arrays.vertices(A, "A"), _arrays.vertices(B, "B"), area)
+def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, F: npt.ArrayLike) -> float:
+    """Mean vertex distance of A and B (one surface in two poses: corresponding
+    rows, triangles F), each scaled to unit surface area, after the best rigid
+    alignment: zero for forms that differ by a rigid motion and a scale."""
+    A, F = _arrays.surface(A, F)
+    return _core.pose_distance(A, _arrays.vertices(B, "B"), F)
 
 
 def retrieval_distance(A: npt.ArrayLike, B: npt.ArrayLike, sample_points: int | None = None,
