@@ -67,6 +67,9 @@
     "iterative: CG iterations per global step at most")                                          \
   X(stretch_weight, "stretch.weight", energy.stretch_weight,                                     \
     "weight k of the stretch term (paper: 1)")                                                   \
+  X(stretch_masses, "stretch.masses", energy.stretch_masses,                                     \
+    "stretch term's vertex weights: uniform (paper) or lumped (each vertex's share of the "      \
+    "volume or, with domain: surface, of the area: independent of where the mesh is dense)")    \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")   \
   X(arap_weights, "arap.weights", energy.arap_weights,                                           \
     "ARAP edge weights w_ij: uniform (paper) or cotangent")                                      \

@@ -270,6 +270,8 @@ void validate_options(const Options& o) {
           "is 0 and so is edge_length.weight: nothing bounds the stretch term");
   require(o.method != "dpmu" || (e.arap_weight == 0 && e.edge_length_weight > 0), "method",
           "dpmu needs arap.weight: 0 and edge_length.weight > 0 (see configs/dpmu.yaml)");
+  require(e.stretch_masses == "uniform" || e.stretch_masses == "lumped", "stretch.masses",
+          "must be uniform or lumped, got '" + e.stretch_masses + "'");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
           "must be uniform or cotangent, got '" + e.arap_weights + "'");
   // The surface domain's energy lives on the triangles' edges: no tets to take

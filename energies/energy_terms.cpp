@@ -8,13 +8,32 @@
 #include "energies/stretch_energy.h"
 #include "energies/user_pairs_energy.h"
 #include "energies/volume_energy.h"
+#include "mesh/lumped_masses.h"
 
 namespace unfold {
 
+namespace {
+
+Eigen::VectorXd stretch_masses(const TetMesh& tets, const EnergyOptions& options,
+                               const Eigen::VectorXd& masses) {
+  if (options.stretch_masses == "uniform") return {};
+  if (options.stretch_masses != "lumped")
+    throw UsageError("config key 'stretch.masses' must be uniform or lumped, got '" +
+                     options.stretch_masses + "'");
+  if (masses.size() > 0) return masses;
+  if (tets.T.rows() == 0)
+    throw UsageError(
+        "stretch.masses: lumped needs the surface's vertex areas on a mesh without tets");
+  return lumped_masses(tets.V, tets.T);
+}
+
+}  // namespace
+
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
-                              const EnergyOptions& options) {
+                              const EnergyOptions& options, const Eigen::VectorXd& masses) {
   EnergyTerms terms;
-  terms.push_back(std::make_unique<StretchEnergy>(graph, options.stretch_weight));
+  terms.push_back(std::make_unique<StretchEnergy>(graph, options.stretch_weight,
+                                                  stretch_masses(tets, options, masses)));
   std::vector<double> weights;
   if (options.arap_weights == "uniform")
     weights.assign(size_t(graph->num_edges()), 1.0);

@@ -1,6 +1,7 @@
 // The set of energy terms a run minimises, built from the config.
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,13 +13,14 @@
 namespace unfold {
 
 struct EnergyOptions {
-  double stretch_weight = 1.0;           ///< k_ij (paper: 1)
-  double arap_weight = 1.0;              ///< ARAP weight relative to beta (paper: 1)
-  std::string arap_weights = "uniform";  ///< w_ij: uniform (paper) or cotangent
-  std::string user_pairs_file;           ///< pair constraints (Eq. 11); empty: none
-  double user_pairs_gamma = 1.0;         ///< gamma relative to beta (paper: gamma = beta)
-  double volume_weight = 0.0;            ///< tet volume term relative to beta; 0: off
-  double edge_length_weight = 0.0;       ///< edge-length springs relative to beta; 0: off
+  double stretch_weight = 1.0;             ///< k_ij (paper: 1)
+  std::string stretch_masses = "uniform";  ///< uniform (paper: every vertex 1) or lumped
+  double arap_weight = 1.0;                ///< ARAP weight relative to beta (paper: 1)
+  std::string arap_weights = "uniform";    ///< w_ij: uniform (paper) or cotangent
+  std::string user_pairs_file;             ///< pair constraints (Eq. 11); empty: none
+  double user_pairs_gamma = 1.0;           ///< gamma relative to beta (paper: gamma = beta)
+  double volume_weight = 0.0;              ///< tet volume term relative to beta; 0: off
+  double edge_length_weight = 0.0;         ///< edge-length springs relative to beta; 0: off
 };
 
 using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
@@ -26,9 +28,13 @@ using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
 /// The terms enabled by `options` on a tet mesh: stretch, and ARAP, edge
 /// lengths, user pairs and volume when configured (weight > 0, a pairs file). The terms
 /// share `graph`.
-/// @param graph the edge graph of `tets` (of its surface when tets.T is empty)
-/// @throws UsageError for an unknown arap_weights, InputError for a bad pairs file
+/// @param graph  the edge graph of `tets` (of its surface when tets.T is empty)
+/// @param masses the stretch term's vertex masses with stretch_masses: lumped
+///        (mesh/lumped_masses.h); when empty, the lumped volumes of tets.T
+/// @throws UsageError for an unknown arap_weights or stretch_masses, or lumped masses
+///         asked of a mesh without tets and none given; InputError for a bad pairs file
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
-                              const EnergyOptions& options);
+                              const EnergyOptions& options,
+                              const Eigen::VectorXd& masses = Eigen::VectorXd());
 
 }  // namespace unfold

@@ -11,6 +11,11 @@
 //
 // Every term is translation invariant, so H may differ from the true Hessian
 // by multiples of 1 1^T: the solvers work on zero-mean Q, where those vanish.
+// A term whose true Hessian is H + u u^T for some other u (the mass-weighted
+// stretch term: H's residuals hold the centroid fixed) returns u from
+// rank_one_hessian(): the direct global step needs not add it (its solution is
+// then the exact minimiser up to a translation), the iterative one adds it to
+// its products so that its matrix keeps zero-mean vectors zero-mean.
 #pragma once
 
 #include "energies/energy_term.h"
@@ -34,6 +39,8 @@ class QuadraticTerm : public EnergyTerm {
   }
   /// c(R), the value at Q = 0. Default: derived_constant.
   virtual double constant(const Rotations& R) const { return derived_constant(R); }
+  /// u with true Hessian = H + u u^T (up to multiples of 1 1^T); empty: none. Default: none.
+  virtual Eigen::VectorXd rank_one_hessian() const { return {}; }
 
   /// H = J^T J from the residuals' Jacobians at Q = 0.
   /// @throws UsageError if a residual block's Jacobian does not act alike on x, y, z

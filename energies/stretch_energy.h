@@ -5,6 +5,15 @@
 // O(n + m) sum of squared residuals with weights -2n and 2, never O(n^2).
 // Quadratic: H = 2 L - 2n I (+ 2 1 1^T, which vanishes on zero-mean Q), B = 0;
 // H has a closed form, faster than the derived one and tested equal to it.
+//
+// With vertex masses m (stretch.masses: lumped; scaled to mean 1, so M = sum m
+// = n) every pair is weighted by m_i m_j: e_s = -2M sum_i m_i |q_i - c_m|^2 +
+// 2 sum_{edges} m_i m_j |q_i - q_j|^2 with c_m the mass-weighted centroid, and
+// H = 2 L_mm - 2M diag(m) + 2 m m^T. The last part is not a multiple of 1 1^T:
+// it is the term's rank_one_hessian(), which the iterative solver adds to its
+// products and the direct one needs not (docs/method.md). Each vertex then
+// pulls with its share of the shape, not as one vertex: the result no longer
+// depends on where the mesh is dense.
 #pragma once
 
 #include <Eigen/Core>
@@ -17,7 +26,7 @@ namespace unfold {
 
 /// q_i - c: the spread of one vertex about the centroid c. The centroid is held
 /// fixed: at the true centroid the derivative through c vanishes because
-/// sum_i (q_i - c) = 0.
+/// sum_i m_i (q_i - c) = 0.
 struct SpreadResidual {
   explicit SpreadResidual(const Eigen::Vector3d& centroid) : c(centroid) {}
   template <typename T>
@@ -31,18 +40,25 @@ struct SpreadResidual {
 /// The stretch term (weight k, not scaled by beta).
 class StretchEnergy : public QuadraticTerm {
  public:
-  /// @param graph edge graph of the tet mesh
-  StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weight)
-      : QuadraticTerm(graph->num_vertices, weight, false), graph_(std::move(graph)) {}
+  /// @param graph  edge graph of the tet mesh
+  /// @param masses vertex masses (positive, scaled here to mean 1); empty: every vertex 1 (paper)
+  /// @throws UsageError if masses has the wrong size or a mass is not positive and finite
+  StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weight,
+                Eigen::VectorXd masses = Eigen::VectorXd());
   std::string name() const override { return "stretch"; }
   double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
                        ResidualSum* sum) const override;
-  /// H in closed form, 2 (D - n I) on the diagonal and -2 per edge: n + 2m
-  /// triplets where the derived form has n + 4m (docs/performance.md).
+  /// H in closed form: 2 (D - n I) on the diagonal and -2 per edge (n + 2m
+  /// triplets where the derived form has n + 4m, docs/performance.md); with
+  /// masses 2 (sum_j m_i m_j - M m_i) and -2 m_i m_j.
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
+  /// sqrt(2) m with masses; empty without (2 1 1^T vanishes on zero-mean Q).
+  Eigen::VectorXd rank_one_hessian() const override;
 
  private:
+  double mass(int i) const { return masses_.size() ? masses_[i] : 1.0; }
   std::shared_ptr<const EdgeGraph> graph_;
+  Eigen::VectorXd masses_;
 };
 
 }  // namespace unfold

@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
+#include "mesh/lumped_masses.h"
 #include "mesh/simplify_surface_mesh.h"
 #include "mesh/sort_interior_vertices.h"
 #include "mesh/tet_volumes.h"
@@ -72,13 +73,26 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
   return surface_only;
 }
 
+// stretch.masses: lumped: the domain's lumped masses (tet volumes; the surface's
+// areas when mesh has no tets), scaled to mean 1 so that M = n and the energy
+// is bounded for beta > n / lambda_2 - 1 with lambda_2 that of L x = lambda M x
+// (docs/method.md); uniform: none.
+Eigen::VectorXd stretch_masses(const TetMesh& mesh, const SurfaceMesh& surface,
+                               const EnergyOptions& options) {
+  if (options.stretch_masses != "lumped") return {};
+  Eigen::VectorXd m = mesh.T.rows() > 0 ? lumped_masses(mesh.V, mesh.T)
+                                        : lumped_masses(mesh.V, triangulate_faces(surface));
+  return m * (double(m.size()) / m.sum());
+}
+
 // The paper's method and the energy-term baselines: lambda_2, beta, the cascade,
 // on the vertices and edges of `mesh`.
 void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
                    UnfoldResult* out) {
   UnfoldResult& result = *out;
   const auto start = std::chrono::steady_clock::now();
-  const UnfoldProblem problem = make_unfold_problem(mesh, graph, options.energy);
+  const Eigen::VectorXd masses = stretch_masses(mesh, result.surface, options.energy);
+  const UnfoldProblem problem = make_unfold_problem(mesh, graph, options.energy, masses);
   const int n = graph.num_vertices;
   // The solver is decided once here (it needs a symbolic analysis), for
   // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
@@ -93,9 +107,9 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
     amg_precomputation(L, AmgOptions{}, amg.get());
     result.amg_levels = int(amg->levels.size());
     result.seconds_amg = seconds_since(amg_start);
-    result.lambda2 = fiedler_value(L, *amg);
+    result.lambda2 = fiedler_value(L, *amg, masses);
   } else {
-    result.lambda2 = fiedler_value(L);
+    result.lambda2 = fiedler_value(L, masses);
   }
   const BetaStart beta = starting_beta(options.beta_mode, options.beta_value,
                                        options.raise_beta_to_bound, n, result.lambda2);

@@ -10,14 +10,20 @@ namespace unfold {
 
 /// Smallest non-zero eigenvalue of a connected graph's Laplacian, by
 /// shift-invert Lanczos (Spectra) on the complement of the constant vector.
-/// @param L symmetric graph Laplacian of a connected graph (n >= 2)
+/// With masses, of the generalized problem L x = lambda diag(masses) x (on the
+/// masses-weighted complement of 1): what bounds the mass-weighted stretch term.
+/// @param L      symmetric graph Laplacian of a connected graph (n >= 2)
+/// @param masses empty, or n positive vertex masses
 /// @throws NumericalError if the eigen-solver does not converge
-double fiedler_value(const Eigen::SparseMatrix<double>& L);
+/// @throws UsageError if masses has the wrong size or a mass is not positive
+double fiedler_value(const Eigen::SparseMatrix<double>& L,
+                     const Eigen::VectorXd& masses = Eigen::VectorXd());
 
 /// The same by LOBPCG preconditioned with an AMG hierarchy of L (solvers/lobpcg.h):
 /// no factorization, near-linear in n; relative accuracy about 1e-12. Graphs of
 /// fewer than 100 vertices go to the direct overload.
 /// @throws NumericalError if LOBPCG does not converge
-double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg);
+double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg,
+                     const Eigen::VectorXd& masses = Eigen::VectorXd());
 
 }  // namespace unfold

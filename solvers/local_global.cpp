@@ -98,7 +98,7 @@ void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX
     data.rhs_rows = data.rhs;
     data.x_rows = *Q;
     const CgResult r = projected_cg(CsrView::of_symmetric(data.A), *data.amg, data.rhs_rows,
-                                    &data.x_rows, data.cg, &data.cg_workspace);
+                                    &data.x_rows, data.cg, &data.cg_workspace, &data.part.U_fixed);
     CgStats& s = data.cg_stats;
     ++s.solves;
     s.iterations += r.iterations;

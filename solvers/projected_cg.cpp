@@ -34,15 +34,18 @@ void update_direction(const RowMatrixX3d& z, const Eigen::Array3d& mean, const E
 }  // namespace
 
 CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const RowMatrixX3d& b,
-                      RowMatrixX3d* x, const CgOptions& options, CgWorkspace* workspace) {
+                      RowMatrixX3d* x, const CgOptions& options, CgWorkspace* workspace,
+                      const Eigen::MatrixXd* U) {
   CgResult result;
   const int n = A.rows;
+  const bool low_rank = U && U->cols() > 0;
   remove_column_means(x);
   const Eigen::Array3d b_norm = column_dots(b, b).sqrt();
   CgWorkspace local;
   CgWorkspace& w = workspace ? *workspace : local;
   RowMatrixX3d &r = w.r, &z = w.z, &p = w.p, &q = w.q;
   residual(A, b, *x, &r);
+  if (low_rank) r.noalias() -= *U * (U->transpose() * *x);
   remove_column_means(&r);
   Eigen::Array3d active = Eigen::Array3d::Ones();  // columns still iterating
   const auto relative = [&](const Eigen::Array3d& r_squared) {
@@ -61,6 +64,7 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
   while (active.any() && result.iterations < options.max_iterations) {
     ++result.iterations;
     multiply(A, p, &q);
+    if (low_rank) q.noalias() += *U * (U->transpose() * p);
     const Eigen::Array3d pq = column_dots(p, q);
     Eigen::Array3d alpha = Eigen::Array3d::Zero();
     for (int k = 0; k < 3; ++k) {

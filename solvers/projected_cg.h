@@ -33,12 +33,15 @@ struct CgWorkspace {
   RowMatrixX3d r, z, p, q;
 };
 
-/// Solves A x = b for zero-mean x, from the zero-mean part of *x (warm start),
-/// preconditioned by one V-cycle of `preconditioner` (an AMG hierarchy of a
-/// Laplacian spectrally close to A up to scale). A column meeting negative
+/// Solves (A + U U^T) x = b for zero-mean x, from the zero-mean part of *x (warm
+/// start), preconditioned by one V-cycle of `preconditioner` (an AMG hierarchy
+/// of a Laplacian spectrally close to A up to scale). A column meeting negative
 /// curvature stops moving and the result says so.
-/// @pre A symmetric, maps zero-mean blocks to zero-mean blocks; b zero-mean; *x has A.rows rows
+/// @param U optional low-rank part (n x k; null or k = 0: none)
+/// @pre A + U U^T symmetric, maps zero-mean blocks to zero-mean blocks; b zero-mean; *x has
+///      A.rows rows
 CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const RowMatrixX3d& b,
-                      RowMatrixX3d* x, const CgOptions& options, CgWorkspace* workspace = nullptr);
+                      RowMatrixX3d* x, const CgOptions& options, CgWorkspace* workspace = nullptr,
+                      const Eigen::MatrixXd* U = nullptr);
 
 }  // namespace unfold

@@ -1,5 +1,6 @@
 #include "solvers/quadratic_part.h"
 
+#include <cmath>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -45,10 +46,20 @@ QuadraticPart assemble_quadratic_part(const UnfoldProblem& problem) {
   const int n = problem.num_vertices();
   part.B_fixed.setZero(n, 3);
   part.B_beta.setZero(n, 3);
+  part.U_fixed.resize(n, 0);
   const Rotations identity(size_t(n), Eigen::Matrix3d::Identity());  // unused: no R dependence
   for (const auto& term : problem.terms) {
     const auto* quadratic = dynamic_cast<const QuadraticTerm*>(term.get());
-    if (!quadratic || dynamic_cast<const RotationTerm*>(term.get())) continue;
+    if (!quadratic) continue;
+    const Eigen::VectorXd u = quadratic->rank_one_hessian();
+    if (u.size() > 0) {
+      if (term->scales_with_beta())
+        throw UsageError("term '" + term->name() +
+                         "' scales with beta and has a rank-one Hessian part: not supported");
+      part.U_fixed.conservativeResize(n, part.U_fixed.cols() + 1);
+      part.U_fixed.rightCols<1>() = std::sqrt(term->weight(1.0)) * u;
+    }
+    if (dynamic_cast<const RotationTerm*>(term.get())) continue;
     const bool scaled = term->scales_with_beta();
     quadratic->add_linear(identity, term->weight(1.0), scaled ? &part.B_beta : &part.B_fixed);
     (scaled ? part.c_beta : part.c_fixed) += term->weight(1.0) * quadratic->constant(identity);

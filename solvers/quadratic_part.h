@@ -25,10 +25,14 @@ struct QuadraticPart {
   /// sum of w_t B_t over the quadratic terms free of R, not scaled / scaled (at beta = 1)
   Eigen::MatrixX3d B_fixed, B_beta;
   double c_fixed = 0, c_beta = 0;  ///< the same for c_t
+  /// columns sqrt(w_t) u_t of the terms' rank_one_hessian(): the true A_fixed is
+  /// A_fixed + U U^T (n x 0 when no term has one)
+  Eigen::MatrixXd U_fixed;
 };
 
 /// A_fixed and A_beta on one pattern (the union of all terms', explicit zeros
-/// kept, so that A_fixed + beta A_beta keeps it), and the constant B and c parts.
+/// kept, so that A_fixed + beta A_beta keeps it), U_fixed, and the constant B and c parts.
+/// @throws UsageError if a term scaled by beta has a rank-one Hessian part (none does)
 QuadraticPart assemble_quadratic_part(const UnfoldProblem& problem);
 
 /// Whether the quadratic part at beta is bounded below off the constant vector:

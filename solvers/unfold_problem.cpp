@@ -7,11 +7,11 @@
 namespace unfold {
 
 UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
-                                  const EnergyOptions& options) {
+                                  const EnergyOptions& options, const Eigen::VectorXd& masses) {
   UnfoldProblem problem;
   problem.graph = std::make_shared<const EdgeGraph>(std::move(graph));
   problem.rest = mesh.V;
-  problem.terms = make_energy_terms(mesh, problem.graph, options);
+  problem.terms = make_energy_terms(mesh, problem.graph, options, masses);
   return problem;
 }
 
