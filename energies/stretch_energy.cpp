@@ -39,18 +39,11 @@ double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& 
 
 void StretchEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const {
   const int n = graph_->num_vertices;
-  if (masses_.size() == 0) {
-    for (int i = 0; i < n; ++i) H->emplace_back(i, i, scale * 2.0 * (graph_->degree(i) - n));
-    for (int e = 0; e < graph_->num_edges(); ++e) {
-      H->emplace_back(graph_->edges(e, 0), graph_->edges(e, 1), -2.0 * scale);
-      H->emplace_back(graph_->edges(e, 1), graph_->edges(e, 0), -2.0 * scale);
-    }
-    return;
-  }
-  Eigen::VectorXd diagonal = -double(n) * masses_;
+  Eigen::VectorXd diagonal(n);
+  for (int i = 0; i < n; ++i) diagonal[i] = -n * mass(i);
   for (int e = 0; e < graph_->num_edges(); ++e) {
     const int a = graph_->edges(e, 0), b = graph_->edges(e, 1);
-    const double w = masses_[a] * masses_[b];
+    const double w = mass(a) * mass(b);
     diagonal[a] += w;
     diagonal[b] += w;
     H->emplace_back(a, b, -2.0 * scale * w);
