@@ -85,7 +85,6 @@ double fiedler_value(const Eigen::SparseMatrix<double>& L, const Eigen::VectorXd
 double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg,
                      const Eigen::VectorXd& masses) {
   if (L.rows() < 100) return fiedler_value(L, masses);
-  check_masses(L, masses);
   const LobpcgResult r = lobpcg_smallest(CsrView::of_symmetric(L), amg, {}, masses);
   if (!r.converged)
     throw NumericalError("LOBPCG for lambda_2 did not converge (relative residual " +
