@@ -19,20 +19,15 @@ double value_from_sums(const Eigen::Vector3d& sums) {
   return std::sqrt(std::max(0.0, 2 - 2 * cosine));
 }
 
-}  // namespace
-
-GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                             const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options) {
-  const int n = graph.num_vertices;
-  if (P.rows() != n || Q.rows() != n || n < 2)
-    throw UsageError("geodesic_error: need P and Q with one row per graph vertex, n >= 2");
+// The sources of the rows used: every vertex when n <= exact_limit, else a
+// uniform random subset of `sources` vertices drawn with the fixed seed.
+std::vector<int> landmark_sources(int n, const GeodesicErrorOptions& options, bool* exact) {
   if (options.exact_limit < 0 || options.sources < 1)
     throw UsageError("geodesic_error: need exact_limit >= 0 and sources >= 1");
-  GeodesicError result;
-  result.exact = n <= options.exact_limit;
+  *exact = n <= options.exact_limit;
   std::vector<int> sources(static_cast<size_t>(n));
   std::iota(sources.begin(), sources.end(), 0);
-  if (!result.exact) {
+  if (!*exact) {
     // Partial Fisher-Yates: the first k entries become a uniform k-subset.
     const int k = std::min(options.sources, n);
     std::mt19937_64 rng(options.seed);
@@ -42,32 +37,34 @@ GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
     }
     sources.resize(size_t(k));
   }
-  result.sources_used = int(sources.size());
+  return sources;
+}
 
-  // Per-row sums of D'^2, G^2 and D'G, added in row order afterwards.
-  std::vector<Eigen::Vector3d> row(sources.size());
-  const NeighborLengths lengths = neighbor_lengths(graph, P);
-  bool disconnected = false;
-#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
-  for (int s = 0; s < int(sources.size()); ++s) {
-    const int i = sources[size_t(s)];
-    std::vector<double> g;
-    graph_geodesics(graph, lengths, i, &g);
-    Eigen::Vector3d sums = Eigen::Vector3d::Zero();
-    for (int j = 0; j < n; ++j) {
-      if (std::isinf(g[size_t(j)])) disconnected = true;
-      const double d = (Q.row(i) - Q.row(j)).norm();
-      sums += Eigen::Vector3d(d * d, g[size_t(j)] * g[size_t(j)], d * g[size_t(j)]);
-    }
-    row[size_t(s)] = sums;
+// Sums of D'^2, G^2 and D'G over one row (source i, distances g).
+Eigen::Vector3d row_sums(const Eigen::MatrixX3d& Q, int i, const double* g) {
+  Eigen::Vector3d sums = Eigen::Vector3d::Zero();
+  for (int j = 0; j < int(Q.rows()); ++j) {
+    const double d = (Q.row(i) - Q.row(j)).norm();
+    sums += Eigen::Vector3d(d * d, g[j] * g[j], d * g[j]);
   }
-  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
+  return sums;
+}
+
+bool has_infinity(const std::vector<double>& g) {
+  return std::any_of(g.begin(), g.end(), [](double x) { return std::isinf(x); });
+}
+
+// E_geo and its jackknife standard error from the per-row sums, added in row order.
+GeodesicError finish(const std::vector<Eigen::Vector3d>& row, bool exact) {
+  GeodesicError result;
+  result.exact = exact;
+  result.sources_used = int(row.size());
   Eigen::Vector3d total = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& sums : row) total += sums;
   if (total[0] == 0 || total[1] == 0)
     throw InputError("geodesic_error: all points coincide, distances cannot be normalised");
   result.value = value_from_sums(total);
-  if (!result.exact && row.size() > 1) {
+  if (!exact && row.size() > 1) {
     // Delete-one jackknife over the landmark rows: the estimator is a smooth
     // function of three row means, so this is its usual standard error.
     const double k = double(row.size());
@@ -80,6 +77,61 @@ GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
     result.standard_error = std::sqrt((k - 1) / k * squares);
   }
   return result;
+}
+
+}  // namespace
+
+GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                             const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options) {
+  const int n = graph.num_vertices;
+  if (P.rows() != n || Q.rows() != n || n < 2)
+    throw UsageError("geodesic_error: need P and Q with one row per graph vertex, n >= 2");
+  bool exact = false;
+  const std::vector<int> sources = landmark_sources(n, options, &exact);
+  // Each row's sums as soon as its distances are known: no n x sources matrix.
+  std::vector<Eigen::Vector3d> row(sources.size());
+  const NeighborLengths lengths = neighbor_lengths(graph, P);
+  bool disconnected = false;
+#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
+  for (int s = 0; s < int(sources.size()); ++s) {
+    std::vector<double> g;
+    graph_geodesics(graph, lengths, sources[size_t(s)], &g);
+    if (has_infinity(g)) disconnected = true;
+    row[size_t(s)] = row_sums(Q, sources[size_t(s)], g.data());
+  }
+  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
+  return finish(row, exact);
+}
+
+GeodesicRows geodesic_error_precomputation(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                           const GeodesicErrorOptions& options) {
+  const int n = graph.num_vertices;
+  if (P.rows() != n || n < 2)
+    throw UsageError("geodesic_error: need P with one row per graph vertex, n >= 2");
+  GeodesicRows rows;
+  rows.sources = landmark_sources(n, options, &rows.exact);
+  rows.G.resize(Eigen::Index(rows.sources.size()), n);
+  const NeighborLengths lengths = neighbor_lengths(graph, P);
+  bool disconnected = false;
+#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
+  for (int s = 0; s < int(rows.sources.size()); ++s) {
+    std::vector<double> g;
+    graph_geodesics(graph, lengths, rows.sources[size_t(s)], &g);
+    if (has_infinity(g)) disconnected = true;
+    rows.G.row(s) = Eigen::Map<const Eigen::RowVectorXd>(g.data(), n);
+  }
+  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
+  return rows;
+}
+
+GeodesicError geodesic_error_solve(const GeodesicRows& rows, const Eigen::MatrixX3d& Q) {
+  if (Q.rows() != rows.G.cols() || rows.sources.empty())
+    throw UsageError("geodesic_error_solve: need Q with one row per column of G");
+  std::vector<Eigen::Vector3d> row(rows.sources.size());
+#pragma omp parallel for schedule(static)
+  for (int s = 0; s < int(rows.sources.size()); ++s)
+    row[size_t(s)] = row_sums(Q, rows.sources[size_t(s)], rows.G.row(s).data());
+  return finish(row, rows.exact);
 }
 
 }  // namespace unfold

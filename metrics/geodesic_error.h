@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <vector>
 
 #include "mesh/edge_graph.h"
 
@@ -36,5 +37,25 @@ struct GeodesicError {
 /// @throws InputError if the graph is disconnected or all points coincide
 GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                              const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options = {});
+
+/// The part of E_geo that depends on the rest shape alone: the sources (the
+/// same as geodesic_error's) and their rows of G, kept in memory (sources x n
+/// doubles). A caller can compute it while the solve runs (the pipeline does
+/// for small meshes, whose solve runs on one thread), then finish with
+/// geodesic_error_solve; the result is geodesic_error's, bit for bit.
+struct GeodesicRows {
+  std::vector<int> sources;
+  /// row s: the graph distances from sources[s] to every vertex
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> G;
+  bool exact = false;
+};
+
+/// @throws as geodesic_error (UsageError, InputError for a disconnected graph)
+GeodesicRows geodesic_error_precomputation(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                           const GeodesicErrorOptions& options = {});
+
+/// @param Q deformed positions, one row per column of rows.G
+/// @throws UsageError on a size mismatch, InputError if all points coincide
+GeodesicError geodesic_error_solve(const GeodesicRows& rows, const Eigen::MatrixX3d& Q);
 
 }  // namespace unfold

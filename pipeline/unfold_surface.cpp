@@ -1,11 +1,14 @@
 #include "pipeline/unfold_surface.h"
 
 #include <glog/logging.h>
+#include <omp.h>
 
 #include <chrono>
+#include <future>
 #include <limits>
 
 #include "core/errors.h"
+#include "core/parallel.h"
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
 #include "mesh/lumped_masses.h"
@@ -203,6 +206,25 @@ CascadeResult lsmds_cascade_result(const EdgeGraph& graph, const Eigen::MatrixX3
   return c;
 }
 
+// E_geo's rows of G depend on the rest shape alone. Where the solve runs on
+// one thread (fewer than kMinParallelRows vertices; LSMDS excepted, which runs
+// Dijkstras of its own in parallel), they are computed on the other core
+// meanwhile, on one thread so that nothing waits on a shared core; the rows
+// must fit in 32 MB. Otherwise no future: E_geo after the solve, in parallel.
+std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                              const Options& options) {
+  const GeodesicErrorOptions& geo = options.geodesic_metric;
+  const int n = graph.num_vertices;
+  const double rows = n <= geo.exact_limit ? n : std::min(geo.sources, n);
+  if (!computes_metric(options, "E_geo") || options.method == "lsmds" || n < 2 ||
+      n >= kMinParallelRows || rows * n * sizeof(double) > (32 << 20))
+    return {};
+  return std::async(std::launch::async, [&graph, &P, geo] {
+    omp_set_num_threads(1);
+    return geodesic_error_precomputation(graph, P, geo);
+  });
+}
+
 }  // namespace
 
 PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
@@ -259,6 +281,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
                                      : Eigen::MatrixXi(triangulate_faces(result.surface)));
   check_tet_graph(graph, result.tets.V);
   result.num_edges = graph.num_edges();
+  std::future<GeodesicRows> geodesic_rows = start_geodesic_rows(graph, result.tets.V, options);
   if (options.method == "lsmds") {
     result.cascade = lsmds_cascade_result(graph, result.tets.V, options.lsmds);
   } else if (options.domain == "surface" && result.tets.T.rows() > 0) {
@@ -299,7 +322,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
     m.E_str_exact = str.exact;
   }
   if (computes_metric(options, "E_geo")) {
-    const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
+    const GeodesicError geo = geodesic_rows.valid()
+                                  ? geodesic_error_solve(geodesic_rows.get(), Q)
+                                  : geodesic_error(graph, P, Q, options.geodesic_metric);
     m.E_geo = geo.value;
     m.E_geo_exact = geo.exact;
   }

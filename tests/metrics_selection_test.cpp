@@ -10,7 +10,10 @@
 #include "config/options.h"
 #include "core/errors.h"
 #include "core/json.h"
+#include "core/parallel.h"
+#include "mesh/edge_graph.h"
 #include "mesh/write_surface_mesh.h"
+#include "metrics/geodesic_error.h"
 #include "pipeline/batch_run.h"
 #include "pipeline/metrics_json.h"
 #include "pipeline/unfold_surface.h"
@@ -59,6 +62,13 @@ TEST(MetricsSelection, OnlyTheAskedMetricsAreComputedAndTheyEqualAFullRun) {
   const UnfoldResult all = unfold_surface(sphere, defaults);
   ASSERT_TRUE(std::isfinite(all.metrics.E_rig) && std::isfinite(all.metrics.E_str) &&
               std::isfinite(all.metrics.E_geo));
+  // A mesh this small has E_geo's rows computed during the solve: the value is
+  // the one-pass function's.
+  ASSERT_LT(all.tets.V.rows(), kMinParallelRows);
+  EXPECT_EQ(all.metrics.E_geo,
+            geodesic_error(build_edge_graph(int(all.tets.V.rows()), Eigen::MatrixXi(all.tets.T)),
+                           all.tets.V, all.tet_canonical, defaults.geodesic_metric)
+                .value);
   Options some;
   some.metrics = {"E_rig", "E_str"};
   const UnfoldResult r = unfold_surface(sphere, some);

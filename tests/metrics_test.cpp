@@ -210,7 +210,7 @@ TEST(MetricGraphGeodesics, BucketsAndHeapAgreeExactly) {
     for (int i = 0; i < n; ++i)
       for (int k = g.offsets[size_t(i)]; k < g.offsets[size_t(i) + 1]; ++k)
         EXPECT_LE(buckets[size_t(g.neighbors[size_t(k)])],
-                  buckets[size_t(i)] + lengths.length[size_t(k)] + 1e-15);
+                  buckets[size_t(i)] + lengths.arcs[size_t(k)].length + 1e-15);
   }
 }
 
@@ -250,6 +250,29 @@ TEST(MetricGeodesic, LandmarkEstimateApproximatesExact) {
   EXPECT_EQ(geodesic_error(g, P, Q, options).value, estimate.value);
 }
 
+// The split the pipeline uses to compute G during the solve: the same value,
+// standard error and sources as the one-pass function, bit for bit.
+TEST(MetricGeodesic, PrecomputedRowsGiveTheOnePassResultExactly) {
+  const EdgeGraph g = grid_tet_graph(12, 10, 8);
+  const Eigen::MatrixX3d P = grid_points(12, 10, 8);
+  const Eigen::MatrixX3d Q = P + 0.5 * (0.4 * P).array().sin().matrix();
+  for (int exact_limit : {100, 5000}) {
+    GeodesicErrorOptions options;
+    options.exact_limit = exact_limit;
+    options.sources = 50;
+    const GeodesicError one_pass = geodesic_error(g, P, Q, options);
+    const GeodesicRows rows = geodesic_error_precomputation(g, P, options);
+    const GeodesicError split = geodesic_error_solve(rows, Q);
+    EXPECT_EQ(split.value, one_pass.value);
+    EXPECT_EQ(split.standard_error, one_pass.standard_error);
+    EXPECT_EQ(split.sources_used, one_pass.sources_used);
+    EXPECT_EQ(split.exact, one_pass.exact);
+    EXPECT_EQ(rows.G.rows(), exact_limit == 100 ? 50 : P.rows());
+  }
+  EXPECT_THROW(geodesic_error_solve(geodesic_error_precomputation(g, P), Q.topRows(10)),
+               UsageError);
+}
+
 TEST(MetricGeodesic, RejectsDisconnectedGraph) {
   Eigen::MatrixXi edges(1, 2);
   edges << 0, 1;
@@ -257,6 +280,7 @@ TEST(MetricGeodesic, RejectsDisconnectedGraph) {
   const Eigen::MatrixX3d P = grid_points(3, 1, 1);
   EXPECT_THROW(geodesic_error(g, P, P), InputError);
   EXPECT_THROW(geodesic_error(g, P, P.topRows(2)), UsageError);
+  EXPECT_THROW(geodesic_error_precomputation(g, P), InputError);
 }
 
 TEST(MetricEdgeRatio, EqualsUniformScale) {
