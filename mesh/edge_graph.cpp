@@ -4,37 +4,56 @@
 #include <cstdint>
 #include <numeric>
 
+#include "core/parallel.h"
+
 namespace unfold {
 
 EdgeGraph build_edge_graph(int num_vertices, const Eigen::MatrixXi& elements) {
+  // Each element pair (i < j) is filed under i (a counting sort), then each
+  // vertex's few higher neighbours are sorted and deduplicated: linear time,
+  // where one sort of all pairs took 0.1 s at 260k tets.
   const int k = int(elements.cols());
-  std::vector<uint64_t> keys;
-  keys.reserve(size_t(elements.rows()) * size_t(k * (k - 1) / 2));
-  for (Eigen::Index e = 0; e < elements.rows(); ++e)
-    for (int a = 0; a < k; ++a)
-      for (int b = a + 1; b < k; ++b) {
-        uint64_t i = uint64_t(elements(e, a)), j = uint64_t(elements(e, b));
-        if (i == j) continue;
-        if (i > j) std::swap(i, j);
-        keys.push_back((i << 32) | j);
-      }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  const auto for_each_pair = [&](auto&& visit) {
+    for (Eigen::Index e = 0; e < elements.rows(); ++e)
+      for (int a = 0; a < k; ++a)
+        for (int b = a + 1; b < k; ++b) {
+          const int i = elements(e, a), j = elements(e, b);
+          if (i != j) visit(std::min(i, j), std::max(i, j));
+        }
+  };
+  std::vector<int> start(size_t(num_vertices) + 1, 0);
+  for_each_pair([&](int i, int) { ++start[size_t(i) + 1]; });
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<int> higher(size_t(start.back()));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for_each_pair([&](int i, int j) { higher[size_t(fill[size_t(i)]++)] = j; });
+  std::vector<int> count(size_t(num_vertices), 0);  // distinct higher neighbours
+#pragma omp parallel for schedule(dynamic, 1024) if (num_vertices >= kMinParallelRows)
+  for (int i = 0; i < num_vertices; ++i) {
+    const auto first = higher.begin() + start[size_t(i)],
+               last = higher.begin() + start[size_t(i) + 1];
+    std::sort(first, last);
+    count[size_t(i)] = int(std::unique(first, last) - first);
+  }
 
   EdgeGraph g;
   g.num_vertices = num_vertices;
-  g.edges.resize(Eigen::Index(keys.size()), 2);
   g.offsets.assign(size_t(num_vertices) + 1, 0);
-  for (size_t e = 0; e < keys.size(); ++e) {
-    g.edges(Eigen::Index(e), 0) = int(keys[e] >> 32);
-    g.edges(Eigen::Index(e), 1) = int(keys[e] & 0xffffffffu);
-    ++g.offsets[size_t(g.edges(Eigen::Index(e), 0)) + 1];
-    ++g.offsets[size_t(g.edges(Eigen::Index(e), 1)) + 1];
-  }
+  int num_edges = 0;
+  for (int i = 0; i < num_vertices; ++i) num_edges += count[size_t(i)];
+  g.edges.resize(num_edges, 2);
+  for (int i = 0, e = 0; i < num_vertices; ++i)
+    for (int c = 0; c < count[size_t(i)]; ++c, ++e) {
+      const int j = higher[size_t(start[size_t(i)] + c)];
+      g.edges(e, 0) = i;
+      g.edges(e, 1) = j;
+      ++g.offsets[size_t(i) + 1];
+      ++g.offsets[size_t(j) + 1];
+    }
   std::partial_sum(g.offsets.begin(), g.offsets.end(), g.offsets.begin());
-  g.neighbors.resize(2 * keys.size());
-  g.neighbor_edge.resize(2 * keys.size());
-  std::vector<int> fill(g.offsets.begin(), g.offsets.end() - 1);
+  g.neighbors.resize(2 * size_t(num_edges));
+  g.neighbor_edge.resize(2 * size_t(num_edges));
+  fill.assign(g.offsets.begin(), g.offsets.end() - 1);
   // Edges are sorted by (i, j), so each vertex's list comes out ascending:
   // lower neighbours arrive (as j of earlier edges) before higher ones.
   for (int e = 0; e < g.num_edges(); ++e) {
