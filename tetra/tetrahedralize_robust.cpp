@@ -10,10 +10,10 @@
 #include <cmath>
 #include <numeric>
 #include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "core/errors.h"
+#include "mesh/edge_graph.h"
 #include "mesh/position_order.h"
 #include "tetra/fast_winding_number.h"
 #include "tetra/run_tetgen.h"
@@ -163,40 +163,46 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
   for (int t = 0; t < num_delaunay; ++t)
     centroids.row(t) = (V.row(T(t, 0)) + V.row(T(t, 1)) + V.row(T(t, 2)) + V.row(T(t, 3))) / 4;
   Eigen::VectorXd w = orientation * fast_winding_number_classify(tree, centroids);
-  std::unordered_set<uint64_t> surface_edges;
-  for (Eigen::Index t = 0; t < F.rows(); ++t)
-    for (int k = 0; k < 3; ++k) surface_edges.insert(edge_key(F(t, k), F(t, (k + 1) % 3)));
+  // Bridging candidates: edges of an inside tet between two surface vertices
+  // that are not surface edges. (edge, tet) pairs sorted by edge group each
+  // edge's tets, so each edge's midpoint is classified once.
+  const EdgeGraph surface_graph = build_edge_graph(n, Eigen::MatrixXi(F));
+  const auto surface_edge = [&](int a, int b) {
+    const auto first = surface_graph.neighbors.begin() + surface_graph.offsets[size_t(a)];
+    const auto last = surface_graph.neighbors.begin() + surface_graph.offsets[size_t(a) + 1];
+    return std::find(first, last, b) != last;
+  };
   const auto corner = [](int k, int e) {  // the 6 edges of a tet as corner pairs
     static const int pairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
     return pairs[e][k];
   };
+  std::vector<char> keep(size_t(num_delaunay), 0);
   std::vector<char> degenerate(size_t(num_delaunay), 0);
-  std::unordered_map<uint64_t, int> tested;  // bridging-candidate edge -> row of midpoints
-  std::vector<int> tested_a, tested_b;
-  for (int t = 0; t < num_delaunay; ++t)
+  std::vector<std::pair<uint64_t, int>> candidates;
+  for (int t = 0; t < num_delaunay; ++t) {
     for (int e = 0; e < 6; ++e) {
       const int a = T(t, corner(0, e)), b = T(t, corner(1, e));
       if (V.row(a) == V.row(b)) degenerate[size_t(t)] = 1;
-      if (w(t) <= kInside || a >= n || b >= n || surface_edges.count(edge_key(a, b))) continue;
-      if (tested.emplace(edge_key(a, b), int(tested_a.size())).second) {
-        tested_a.push_back(a);
-        tested_b.push_back(b);
-      }
+      if (w(t) <= kInside || a >= n || b >= n || surface_edge(a, b)) continue;
+      candidates.emplace_back(edge_key(a, b), t);
     }
-  Eigen::MatrixX3d midpoints(tested_a.size(), 3);
-  for (size_t k = 0; k < tested_a.size(); ++k)
-    midpoints.row(Eigen::Index(k)) = (V.row(tested_a[k]) + V.row(tested_b[k])) / 2;
-  const Eigen::VectorXd w_mid = orientation * fast_winding_number_classify(tree, midpoints);
-  std::vector<char> keep(size_t(num_delaunay), 0);
-  for (int t = 0; t < num_delaunay; ++t) {
-    if (w(t) <= kInside || degenerate[size_t(t)]) continue;
-    bool inside = true;
-    for (int e = 0; e < 6 && inside; ++e) {
-      const auto it = tested.find(edge_key(T(t, corner(0, e)), T(t, corner(1, e))));
-      if (it != tested.end() && w_mid(it->second) <= kInside) inside = false;
-    }
-    keep[size_t(t)] = inside;
+    keep[size_t(t)] = w(t) > kInside && !degenerate[size_t(t)];
   }
+  std::sort(candidates.begin(), candidates.end());
+  std::vector<size_t> group_start;  // first candidate of each distinct edge
+  for (size_t k = 0; k < candidates.size(); ++k)
+    if (k == 0 || candidates[k].first != candidates[k - 1].first) group_start.push_back(k);
+  Eigen::MatrixX3d midpoints(group_start.size(), 3);
+  for (size_t g = 0; g < group_start.size(); ++g) {
+    const uint64_t key = candidates[group_start[g]].first;
+    midpoints.row(Eigen::Index(g)) = (V.row(int(key >> 32)) + V.row(int(key & 0xffffffffu))) / 2;
+  }
+  const Eigen::VectorXd w_mid = orientation * fast_winding_number_classify(tree, midpoints);
+  group_start.push_back(candidates.size());
+  for (size_t g = 0; g + 1 < group_start.size(); ++g)
+    if (w_mid(Eigen::Index(g)) <= kInside)
+      for (size_t k = group_start[g]; k < group_start[g + 1]; ++k)
+        keep[size_t(candidates[k].second)] = 0;
 
   const double seconds_carve = lap(&clock);
 
