@@ -5,17 +5,21 @@
 #include <cmath>
 #include <cstdint>
 
+#include "geometry/fast_atan2.h"
+
 namespace unfold {
 namespace {
 
 // Signed solid angle of triangle (a, b, c) seen from q (Van Oosterom and
 // Strackee 1983); positive when q is behind the triangle's normal.
 // x, y, z: the corners relative to q; lx, ly, lz: their lengths.
+// Fast: fast_atan2 instead of std::atan2 (within kFastAtan2Error).
+template <bool Fast = false>
 double solid_angle(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const Eigen::Vector3d& z,
                    double lx, double ly, double lz) {
   const double numerator = x.dot(y.cross(z));
   const double denominator = lx * ly * lz + x.dot(y) * lz + y.dot(z) * lx + z.dot(x) * ly;
-  return 2 * std::atan2(numerator, denominator);
+  return 2 * (Fast ? fast_atan2(numerator, denominator) : std::atan2(numerator, denominator));
 }
 
 double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
@@ -143,6 +147,7 @@ FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d&
 namespace {
 
 // Winding number at q: clusters farther than accuracy * radius by their dipole.
+template <bool Fast>
 double winding_number_at(const FastWindingNumberTree& tree, const Eigen::Vector3d& q,
                          double accuracy) {
   double sum = 0;
@@ -166,8 +171,8 @@ double winding_number_at(const FastWindingNumberTree& tree, const Eigen::Vector3
       }
       for (int k = node.first; k < node.first + node.count; ++k) {
         const unsigned char* c = &tree.corners[size_t(3 * k)];
-        sum += solid_angle(offset[c[0]], offset[c[1]], offset[c[2]], length[c[0]], length[c[1]],
-                           length[c[2]]);
+        sum += solid_angle<Fast>(offset[c[0]], offset[c[1]], offset[c[2]], length[c[0]],
+                                 length[c[1]], length[c[2]]);
       }
     } else {
       stack[size++] = node.left;
@@ -179,13 +184,14 @@ double winding_number_at(const FastWindingNumberTree& tree, const Eigen::Vector3
 
 // Fills w(i) for the rows i of Q listed in `rows` (in that order: a Z-order
 // keeps the tree's nodes in cache from one query to the next).
+template <bool Fast = false>
 void solve_rows(const FastWindingNumberTree& tree, const Eigen::MatrixX3d& Q,
                 const std::vector<int>& rows, double accuracy, Eigen::VectorXd* w) {
   if (tree.nodes.empty()) return;
 #pragma omp parallel for schedule(dynamic, 256)
   for (Eigen::Index s = 0; s < Eigen::Index(rows.size()); ++s) {
     const int i = rows[size_t(s)];
-    (*w)(i) = winding_number_at(tree, Q.row(i), accuracy);
+    (*w)(i) = winding_number_at<Fast>(tree, Q.row(i), accuracy);
   }
 }
 
@@ -203,7 +209,9 @@ Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const ClassifyOptions& options) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
   const std::vector<int> order = spatial_order(Q);
-  solve_rows(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
+  // The first pass's atan2 is fast_atan2: its error, kFastAtan2Error / (2 pi)
+  // per near triangle, is far below the margin for any mesh (1e-4 at 6 million triangles).
+  solve_rows<true>(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
   std::vector<int> uncertain;
   for (int i : order)
     if (std::abs(std::abs(w(i)) - 0.5) < options.margin) uncertain.push_back(i);
