@@ -6,6 +6,9 @@
 
 namespace unfold {
 
-using RowMatrixX3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+template <typename Scalar>
+using RowMatrixX3 = Eigen::Matrix<Scalar, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using RowMatrixX3d = RowMatrixX3<double>;
+using RowMatrixX3f = RowMatrixX3<float>;
 
 }  // namespace unfold

@@ -2,31 +2,17 @@
 
 namespace unfold {
 
-CsrView::CsrView(const RowSparse& A)
-    : rows(int(A.rows())),
-      outer(A.outerIndexPtr()),
-      inner(A.innerIndexPtr()),
-      values(A.valuePtr()) {}
-
-CsrView CsrView::of_symmetric(const Eigen::SparseMatrix<double>& A) {
-  CsrView v;
-  v.rows = int(A.rows());
-  v.outer = A.outerIndexPtr();
-  v.inner = A.innerIndexPtr();
-  v.values = A.valuePtr();
-  return v;
-}
-
-void multiply(const CsrView& A, const RowMatrixX3d& X, RowMatrixX3d* Y) {
+template <typename Scalar>
+void multiply(const CsrViewOf<Scalar>& A, const RowMatrixX3<Scalar>& X, RowMatrixX3<Scalar>* Y) {
   Y->resize(A.rows, 3);
-  const double* x = X.data();
-  double* y = Y->data();
+  const Scalar* x = X.data();
+  Scalar* y = Y->data();
 #pragma omp parallel for schedule(static) if (A.rows >= kMinParallelRows)
   for (int i = 0; i < A.rows; ++i) {
-    double s0 = 0, s1 = 0, s2 = 0;
+    Scalar s0 = 0, s1 = 0, s2 = 0;
     for (int k = A.outer[i]; k < A.outer[i + 1]; ++k) {
-      const double a = A.values[k];
-      const double* xj = x + 3 * size_t(A.inner[k]);
+      const Scalar a = A.values[k];
+      const Scalar* xj = x + 3 * size_t(A.inner[k]);
       s0 += a * xj[0];
       s1 += a * xj[1];
       s2 += a * xj[2];
@@ -39,17 +25,19 @@ void multiply(const CsrView& A, const RowMatrixX3d& X, RowMatrixX3d* Y) {
 
 // multiply's loop with another start and sign: one kernel serving both was
 // 15 % slower in the V-cycle (measured), so the two stay apart.
-void residual(const CsrView& A, const RowMatrixX3d& B, const RowMatrixX3d& X, RowMatrixX3d* R) {
+template <typename Scalar>
+void residual(const CsrViewOf<Scalar>& A, const RowMatrixX3<Scalar>& B,
+              const RowMatrixX3<Scalar>& X, RowMatrixX3<Scalar>* R) {
   R->resize(A.rows, 3);
-  const double* x = X.data();
-  const double* b = B.data();
-  double* r = R->data();
+  const Scalar* x = X.data();
+  const Scalar* b = B.data();
+  Scalar* r = R->data();
 #pragma omp parallel for schedule(static) if (A.rows >= kMinParallelRows)
   for (int i = 0; i < A.rows; ++i) {
-    double s0 = b[3 * size_t(i)], s1 = b[3 * size_t(i) + 1], s2 = b[3 * size_t(i) + 2];
+    Scalar s0 = b[3 * size_t(i)], s1 = b[3 * size_t(i) + 1], s2 = b[3 * size_t(i) + 2];
     for (int k = A.outer[i]; k < A.outer[i + 1]; ++k) {
-      const double a = A.values[k];
-      const double* xj = x + 3 * size_t(A.inner[k]);
+      const Scalar a = A.values[k];
+      const Scalar* xj = x + 3 * size_t(A.inner[k]);
       s0 -= a * xj[0];
       s1 -= a * xj[1];
       s2 -= a * xj[2];
@@ -59,6 +47,13 @@ void residual(const CsrView& A, const RowMatrixX3d& B, const RowMatrixX3d& X, Ro
     r[3 * size_t(i) + 2] = s2;
   }
 }
+
+template void multiply(const CsrViewOf<double>&, const RowMatrixX3d&, RowMatrixX3d*);
+template void multiply(const CsrViewOf<float>&, const RowMatrixX3f&, RowMatrixX3f*);
+template void residual(const CsrViewOf<double>&, const RowMatrixX3d&, const RowMatrixX3d&,
+                       RowMatrixX3d*);
+template void residual(const CsrViewOf<float>&, const RowMatrixX3f&, const RowMatrixX3f&,
+                       RowMatrixX3f*);
 
 Eigen::Array3d column_dots(const RowMatrixX3d& X, const RowMatrixX3d& Y) {
   return chunked_row_sum(int(X.rows()), [&](int i) {

@@ -16,26 +16,45 @@ namespace unfold {
 
 using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-/// A compressed sparse row matrix seen through its arrays: a RowSparse, or a
-/// symmetric column-major matrix (its CSC arrays are its own CSR arrays).
-struct CsrView {
+/// A compressed sparse row matrix seen through its arrays: a row-major sparse
+/// matrix, or a symmetric column-major one (its CSC arrays are its own CSR
+/// arrays). Scalar: double, or float for the AMG's single-precision V-cycle.
+template <typename Scalar>
+struct CsrViewOf {
   int rows = 0;
   const int* outer = nullptr;
   const int* inner = nullptr;
-  const double* values = nullptr;
+  const Scalar* values = nullptr;
 
-  CsrView() = default;
-  explicit CsrView(const RowSparse& A);
+  CsrViewOf() = default;
+  /// @pre A is compressed
+  explicit CsrViewOf(const Eigen::SparseMatrix<Scalar, Eigen::RowMajor>& A)
+      : rows(int(A.rows())),
+        outer(A.outerIndexPtr()),
+        inner(A.innerIndexPtr()),
+        values(A.valuePtr()) {}
   /// @pre A is compressed and symmetric (pattern and values)
-  static CsrView of_symmetric(const Eigen::SparseMatrix<double>& A);
+  static CsrViewOf of_symmetric(const Eigen::SparseMatrix<Scalar>& A) {
+    CsrViewOf v;
+    v.rows = int(A.rows());
+    v.outer = A.outerIndexPtr();
+    v.inner = A.innerIndexPtr();
+    v.values = A.valuePtr();
+    return v;
+  }
 };
+using CsrView = CsrViewOf<double>;
 
 /// Y = A X. @pre X has A.rows rows; Y is resized (may not alias X).
-void multiply(const CsrView& A, const RowMatrixX3d& X, RowMatrixX3d* Y);
+/// Instantiated for double and float.
+template <typename Scalar>
+void multiply(const CsrViewOf<Scalar>& A, const RowMatrixX3<Scalar>& X, RowMatrixX3<Scalar>* Y);
 
 /// R = B - A X. @pre B and X have A.rows rows; R is resized. R may alias B
-/// (R -= A X), not X.
-void residual(const CsrView& A, const RowMatrixX3d& B, const RowMatrixX3d& X, RowMatrixX3d* R);
+/// (R -= A X), not X. Instantiated for double and float.
+template <typename Scalar>
+void residual(const CsrViewOf<Scalar>& A, const RowMatrixX3<Scalar>& B,
+              const RowMatrixX3<Scalar>& X, RowMatrixX3<Scalar>* R);
 
 /// Sum over rows i of row_sum(i) (a fixed-size Eigen array), in parallel. The rows
 /// are cut into 64 chunks fixed by n alone and the partial sums added in chunk

@@ -99,35 +99,36 @@ void build_level(AmgLevel* level) {
 // D^-1, damping the eigenvalues of D^-1 A in [lambda_max / ratio, lambda_max]
 // (Saad's three-term recurrence). A polynomial in D^-1 A keeps the V-cycle
 // symmetric when the same smoother runs before and after the coarse correction.
-void chebyshev(const AmgLevel& level, const AmgOptions& options, const RowMatrixX3d& b,
-               RowMatrixX3d* x, bool zero_initial) {
-  const CsrView A(level.A);
+template <typename Scalar>
+void chebyshev(const AmgLevelOf<Scalar>& level, const AmgOptions& options,
+               const RowMatrixX3<Scalar>& b, RowMatrixX3<Scalar>* x, bool zero_initial) {
+  const CsrViewOf<Scalar> A(level.A);
   const int n = A.rows;
   const double upper = level.lambda_max, lower = upper / options.smoothing_ratio;
   const double theta = (upper + lower) / 2, delta = (upper - lower) / 2, sigma = theta / delta;
   double rho = 1 / sigma;
-  RowMatrixX3d& r = level.r;
-  RowMatrixX3d& d = level.d;
-  const Eigen::VectorXd& dinv = level.inverse_diagonal;
+  RowMatrixX3<Scalar>& r = level.r;
+  RowMatrixX3<Scalar>& d = level.d;
+  const auto& dinv = level.inverse_diagonal;
   // First step: d = D^-1 r / theta with r = b - A x (= b from x = 0), x += d.
   if (zero_initial) {
     d.resize(n, 3);
     x->resize(n, 3);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
-    for (int i = 0; i < n; ++i) x->row(i) = d.row(i) = (dinv[i] / theta) * b.row(i);
+    for (int i = 0; i < n; ++i) x->row(i) = d.row(i) = (dinv[i] / Scalar(theta)) * b.row(i);
   } else {
     residual(A, b, *x, &r);
     d.resize(n, 3);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
     for (int i = 0; i < n; ++i) {
-      d.row(i) = (dinv[i] / theta) * r.row(i);
+      d.row(i) = (dinv[i] / Scalar(theta)) * r.row(i);
       x->row(i) += d.row(i);
     }
   }
   for (int k = 2; k <= options.smoothing_degree; ++k) {
     residual(A, k == 2 && zero_initial ? b : r, d, &r);  // r -= A d (r = b - A d the first time)
     const double rho_next = 1 / (2 * sigma - rho);
-    const double keep = rho_next * rho, step = 2 * rho_next / delta;
+    const Scalar keep = Scalar(rho_next * rho), step = Scalar(2 * rho_next / delta);
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
     for (int i = 0; i < n; ++i) {
       d.row(i) = keep * d.row(i) + (step * dinv[i]) * r.row(i);
@@ -149,20 +150,35 @@ Eigen::MatrixXd pseudo_inverse(const Eigen::MatrixXd& A) {
   return eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
 }
 
-void vcycle(const AmgData& data, size_t l, const RowMatrixX3d& b, RowMatrixX3d* x) {
-  if (l + 1 == data.levels.size()) {
-    *x = data.coarse_inverse * b;
+template <typename Scalar, typename Dense>
+void vcycle(const std::vector<AmgLevelOf<Scalar>>& levels, const Dense& coarse_inverse,
+            const AmgOptions& options, size_t l, const RowMatrixX3<Scalar>& b,
+            RowMatrixX3<Scalar>* x) {
+  if (l + 1 == levels.size()) {
+    *x = coarse_inverse * b;
     return;
   }
-  const AmgLevel& level = data.levels[l];
-  const AmgLevel& coarse = data.levels[l + 1];
-  chebyshev(level, data.options, b, x, true);
-  residual(CsrView(level.A), b, *x, &level.r);
-  multiply(CsrView(level.R), level.r, &coarse.b);
-  vcycle(data, l + 1, coarse.b, &coarse.x);
-  multiply(CsrView(level.P), coarse.x, &level.d);
+  const AmgLevelOf<Scalar>& level = levels[l];
+  const AmgLevelOf<Scalar>& coarse = levels[l + 1];
+  chebyshev(level, options, b, x, true);
+  residual(CsrViewOf<Scalar>(level.A), b, *x, &level.r);
+  multiply(CsrViewOf<Scalar>(level.R), level.r, &coarse.b);
+  vcycle(levels, coarse_inverse, options, l + 1, coarse.b, &coarse.x);
+  multiply(CsrViewOf<Scalar>(level.P), coarse.x, &level.d);
   *x += level.d;
-  chebyshev(level, data.options, b, x, false);
+  chebyshev(level, options, b, x, false);
+}
+
+// The float copy of a level (its work blocks stay empty until used).
+AmgLevelOf<float> single_precision_level(const AmgLevel& level) {
+  AmgLevelOf<float> single;
+  single.A = level.A.cast<float>();
+  single.inverse_diagonal = level.inverse_diagonal.cast<float>();
+  single.lambda_max = level.lambda_max;
+  single.P = level.P.cast<float>();
+  single.R = level.R.cast<float>();
+  for (auto* M : {&single.A, &single.P, &single.R}) M->makeCompressed();  // for CsrViewOf
+  return single;
 }
 
 }  // namespace
@@ -208,10 +224,25 @@ void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& 
   }
   data->operator_complexity = nonzeros / finest;
   data->coarse_inverse = pseudo_inverse(Eigen::MatrixXd(data->levels.back().A));
+  data->single_levels.clear();
+  if (options.single_precision) {
+    for (const AmgLevel& level : data->levels)
+      data->single_levels.push_back(single_precision_level(level));
+    data->single_coarse_inverse = data->coarse_inverse.cast<float>();
+  }
 }
 
 void amg_vcycle(const AmgData& data, const RowMatrixX3d& b, RowMatrixX3d* x) {
-  vcycle(data, 0, b, x);
+  if (data.single_levels.empty()) {
+    vcycle(data.levels, data.coarse_inverse, data.options, 0, b, x);
+    return;
+  }
+  // The finest level's own x and b blocks are free: the cycle uses each level's
+  // r and d, and the coarser levels' x and b.
+  const AmgLevelOf<float>& finest = data.single_levels.front();
+  finest.b = b.cast<float>();
+  vcycle(data.single_levels, data.single_coarse_inverse, data.options, 0, finest.b, &finest.x);
+  *x = finest.x.cast<double>();
 }
 
 }  // namespace unfold

@@ -21,20 +21,31 @@ struct AmgOptions {
   int smoothing_degree = 2;  ///< Chebyshev polynomial degree, pre and post
   /// the smoother damps the eigenvalues of D^-1 A in [lambda_max / ratio, lambda_max]
   double smoothing_ratio = 10;
+  /// V-cycle in float (the hierarchy is built in double): its sparse products
+  /// are memory-bound, and float halves their traffic (docs/performance.md). A
+  /// preconditioner need only be close to M^+; the solvers' own products and
+  /// residuals stay in double.
+  bool single_precision = true;
 };
 
-struct AmgLevel {
-  RowSparse A;                       ///< this level's matrix
-  Eigen::VectorXd inverse_diagonal;  ///< D^-1
-  double lambda_max = 0;             ///< estimate of the largest eigenvalue of D^-1 A
-  RowSparse P;                       ///< prolongation from the next coarser level
-  RowSparse R;                       ///< restriction, P^T
-  mutable RowMatrixX3d x, b, r, d;   ///< V-cycle work blocks
+template <typename Scalar>
+struct AmgLevelOf {
+  using Sparse = Eigen::SparseMatrix<Scalar, Eigen::RowMajor>;
+  Sparse A;                                                   ///< this level's matrix
+  Eigen::Matrix<Scalar, Eigen::Dynamic, 1> inverse_diagonal;  ///< D^-1
+  double lambda_max = 0;                   ///< estimate of the largest eigenvalue of D^-1 A
+  Sparse P;                                ///< prolongation from the next coarser level
+  Sparse R;                                ///< restriction, P^T
+  mutable RowMatrixX3<Scalar> x, b, r, d;  ///< V-cycle work blocks
 };
+using AmgLevel = AmgLevelOf<double>;
 
 struct AmgData {
   std::vector<AmgLevel> levels;    ///< finest first
   Eigen::MatrixXd coarse_inverse;  ///< pseudo-inverse of the coarsest matrix
+  /// With options.single_precision: the levels and coarse inverse in float, for the V-cycle.
+  std::vector<AmgLevelOf<float>> single_levels;
+  Eigen::MatrixXf single_coarse_inverse;
   AmgOptions options;
   double operator_complexity = 0;  ///< nonzeros of all levels / nonzeros of the finest
 };
@@ -48,7 +59,8 @@ void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& 
                         AmgData* data);
 
 /// One V-cycle for M x = b from x = 0: an approximation of M^+ b, symmetric
-/// positive definite in b on the complement of the constant vector.
+/// positive definite in b on the complement of the constant vector (to float
+/// rounding with options.single_precision).
 /// Uses data's work blocks: one `data` must not serve two calls at a time.
 /// @param b n x 3; x is resized to n x 3 (may not alias b)
 void amg_vcycle(const AmgData& data, const RowMatrixX3d& b, RowMatrixX3d* x);
