@@ -1,5 +1,5 @@
 // Row-major n x 3 matrices: each vertex is 3 contiguous doubles, as the Ceres
-// functors take them.
+// functors take them (floats in the AMG's single-precision V-cycle).
 #pragma once
 
 #include <Eigen/Core>
