@@ -50,8 +50,23 @@ Eigen::Vector3d row_sums(const Eigen::MatrixX3d& Q, int i, const double* g) {
   return sums;
 }
 
-bool has_infinity(const std::vector<double>& g) {
-  return std::any_of(g.begin(), g.end(), [](double x) { return std::isinf(x); });
+// The graph distances from every source, in parallel, each row handed to
+// visit(s, distances) on the thread that computed it.
+// @throws InputError if some vertex is unreachable
+template <typename Visit>
+void for_each_row(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                  const std::vector<int>& sources, const Visit& visit) {
+  const NeighborLengths lengths = neighbor_lengths(graph, P);
+  bool disconnected = false;
+#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
+  for (int s = 0; s < int(sources.size()); ++s) {
+    std::vector<double> g;
+    graph_geodesics(graph, lengths, sources[size_t(s)], &g);
+    if (std::any_of(g.begin(), g.end(), [](double x) { return std::isinf(x); }))
+      disconnected = true;
+    visit(s, g);
+  }
+  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
 }
 
 // E_geo and its jackknife standard error from the per-row sums, added in row order.
@@ -90,16 +105,9 @@ GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
   const std::vector<int> sources = landmark_sources(n, options, &exact);
   // Each row's sums as soon as its distances are known: no n x sources matrix.
   std::vector<Eigen::Vector3d> row(sources.size());
-  const NeighborLengths lengths = neighbor_lengths(graph, P);
-  bool disconnected = false;
-#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
-  for (int s = 0; s < int(sources.size()); ++s) {
-    std::vector<double> g;
-    graph_geodesics(graph, lengths, sources[size_t(s)], &g);
-    if (has_infinity(g)) disconnected = true;
+  for_each_row(graph, P, sources, [&](int s, const std::vector<double>& g) {
     row[size_t(s)] = row_sums(Q, sources[size_t(s)], g.data());
-  }
-  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
+  });
   return finish(row, exact);
 }
 
@@ -111,16 +119,9 @@ GeodesicRows geodesic_error_precomputation(const EdgeGraph& graph, const Eigen::
   GeodesicRows rows;
   rows.sources = landmark_sources(n, options, &rows.exact);
   rows.G.resize(Eigen::Index(rows.sources.size()), n);
-  const NeighborLengths lengths = neighbor_lengths(graph, P);
-  bool disconnected = false;
-#pragma omp parallel for schedule(dynamic, 1) reduction(|| : disconnected)
-  for (int s = 0; s < int(rows.sources.size()); ++s) {
-    std::vector<double> g;
-    graph_geodesics(graph, lengths, rows.sources[size_t(s)], &g);
-    if (has_infinity(g)) disconnected = true;
+  for_each_row(graph, P, rows.sources, [&](int s, const std::vector<double>& g) {
     rows.G.row(s) = Eigen::Map<const Eigen::RowVectorXd>(g.data(), n);
-  }
-  if (disconnected) throw InputError("geodesic_error: the graph is not connected");
+  });
   return rows;
 }
 
