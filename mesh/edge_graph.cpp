@@ -1,7 +1,6 @@
 #include "mesh/edge_graph.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <numeric>
 
 #include "core/parallel.h"
