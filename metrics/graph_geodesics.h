@@ -10,8 +10,7 @@ namespace unfold {
 
 /// One CSR neighbour entry with its Euclidean length |p_i - p_j|. Packed to 12
 /// bytes: a Dijkstra run reads a vertex's entries in one stream, and that read
-/// is most of its time (1.4x faster than separate neighbour and length arrays
-/// on a 75k-vertex tet mesh, docs/performance.md).
+/// is most of its time (docs/performance.md, "Fourth pass").
 #pragma pack(push, 4)
 struct NeighborArc {
   int neighbor;
