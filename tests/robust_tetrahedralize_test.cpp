@@ -4,7 +4,9 @@
 // apart, and every mesh of ../shared/data unfolds with the default settings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <set>
 
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
@@ -13,6 +15,7 @@
 #include "shapes/articulated_shape.h"
 #include "test_meshes.h"
 #include "tetra/fast_winding_number.h"
+#include "tetra/run_tetgen.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -120,6 +123,60 @@ TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
   }
   EXPECT_GT(volume, 0.8 * 4.0 / 3.0 * M_PI * 8.0);
   EXPECT_LT(volume, 4.0 / 3.0 * M_PI * 8.0);
+}
+
+// The edges of TetGen's Delaunay tetrahedralization of an N^3 lattice (x, then
+// y, then z in input order) sheared by `shear` as the robust route shears its
+// grid, leaving out edges between two points on the lattice's boundary: the
+// hull's coplanar points are split arbitrarily, which the robust route never
+// sees (its hull is the surface).
+std::set<std::pair<int, int>> sheared_lattice_edges(int N, double shear) {
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = N * N * N;
+  in.pointlist = new REAL[size_t(in.numberofpoints) * 3];
+  const auto on_boundary = [N](int i) {
+    const int c[3] = {i / (N * N), i / N % N, i % N};
+    return std::any_of(c, c + 3, [N](int x) { return x == 0 || x == N - 1; });
+  };
+  for (int i = 0; i < in.numberofpoints; ++i) {
+    const double x = i / (N * N), y = i / N % N, z = i % N;
+    in.pointlist[3 * i] = x + shear * (y + z);
+    in.pointlist[3 * i + 1] = y + shear * (x + z);
+    in.pointlist[3 * i + 2] = z + shear * (x + y);
+  }
+  const TetgenOutput out = run_tetgen("zQ", in, "lattice test");
+  std::set<std::pair<int, int>> edges;
+  for (Eigen::Index t = 0; t < out.tets.rows(); ++t)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const int i = std::min(out.tets(t, a), out.tets(t, b));
+        const int j = std::max(out.tets(t, a), out.tets(t, b));
+        if (!on_boundary(i) || !on_boundary(j)) edges.emplace(i, j);
+      }
+  return edges;
+}
+
+// The robust route shears its interior grid so that TetGen needs no exact
+// arithmetic on cospherical cell corners; the shear must split every cell as
+// TetGen's symbolic perturbation splits the unsheared lattice, or the tet mesh
+// (and E_rig, E_str) would change with it.
+TEST(RobustTetrahedralize, InteriorGridShearSplitsCellsAsTetGensPerturbation) {
+  const int N = 6;
+  const std::set<std::pair<int, int>> perturbed = sheared_lattice_edges(N, 0.0);
+  const std::set<std::pair<int, int>> sheared = sheared_lattice_edges(N, kInteriorGridShear);
+  EXPECT_EQ(sheared, perturbed);
+  // 6 tets per cell around the (1, 1, 1) diagonal: one diagonal per cell and
+  // one per face, besides the lattice edges.
+  const int diagonal = N * N + N + 1;  // index step from corner (0, 0, 0) to (1, 1, 1)
+  for (int x = 1; x + 2 < N; ++x)
+    for (int y = 1; y + 2 < N; ++y)
+      for (int z = 1; z + 2 < N; ++z) {
+        const int i = (x * N + y) * N + z;
+        EXPECT_TRUE(perturbed.count({i, i + diagonal})) << x << " " << y << " " << z;
+      }
+  // The sign matters: the opposite shear splits cells along another diagonal.
+  EXPECT_NE(sheared_lattice_edges(N, -kInteriorGridShear), perturbed);
 }
 
 // TetGen's conforming mode refuses these surfaces (the conforming route

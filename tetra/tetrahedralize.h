@@ -64,4 +64,14 @@ TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality,
 ///         TetGen fails or a surface vertex is in no usable tetrahedron
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report = nullptr);
 
+/// The robust route's interior grid is a cubic lattice sheared by this much:
+/// lattice point (x, y, z) (in cells, in TetGen's input order x, then y, then
+/// z) moves by kInteriorGridShear * (y + z, x + z, x + y) cells. A cubic cell's
+/// 8 corners are cospherical, which TetGen resolves by exact arithmetic and
+/// symbolic perturbation (a third of its Delaunay time on the TOSCA/FAUST
+/// meshes); a sheared cell has one Delaunay split, and with this sign it is
+/// the one the perturbation picks for whole cells: 6 tets around the (1, 1, 1)
+/// diagonal (docs/tetrahedralization.md).
+inline constexpr double kInteriorGridShear = -5e-7;
+
 }  // namespace unfold

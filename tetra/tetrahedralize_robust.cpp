@@ -54,7 +54,9 @@ Eigen::MatrixX3d separate_duplicates(const Eigen::MatrixX3d& V, double offset) {
   return P;
 }
 
-// Grid points inside the surface, at least `spacing / 2` from every surface vertex.
+// Grid points inside the surface, at least `spacing / 2` from every surface
+// vertex (both tested before the lattice is sheared by kInteriorGridShear: the
+// shear moves no point across either test).
 Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindingNumberTree& tree,
                                       double orientation, double spacing) {
   const Eigen::RowVector3d low = V.colwise().minCoeff(), high = V.colwise().maxCoeff();
@@ -68,7 +70,7 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
     return (int64_t(c(0) + 1) * (cells(1) + 3) + (c(1) + 1)) * (cells(2) + 3) + (c(2) + 1);
   };
   for (int i = 0; i < int(V.rows()); ++i) buckets[key(cell_of(V.row(i)))].push_back(i);
-  std::vector<Eigen::RowVector3d> candidates;
+  std::vector<Eigen::RowVector3d> candidates, shifts;
   for (int x = 0; x < cells(0); ++x)
     for (int y = 0; y < cells(1); ++y)
       for (int z = 0; z < cells(2); ++z) {
@@ -86,14 +88,17 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
                   break;
                 }
             }
-        if (far) candidates.push_back(p);
+        if (far) {
+          candidates.push_back(p);
+          shifts.push_back(kInteriorGridShear * spacing * Eigen::RowVector3d(y + z, x + z, x + y));
+        }
       }
   Eigen::MatrixX3d Q(candidates.size(), 3);
   for (size_t k = 0; k < candidates.size(); ++k) Q.row(Eigen::Index(k)) = candidates[k];
   const Eigen::VectorXd w = orientation * fast_winding_number_classify(tree, Q);
   Eigen::MatrixX3d inside((w.array() > kInside).count(), 3);
   for (Eigen::Index k = 0, row = 0; k < Q.rows(); ++k)
-    if (w(k) > kInside) inside.row(row++) = Q.row(k);
+    if (w(k) > kInside) inside.row(row++) = Q.row(k) + shifts[size_t(k)];
   return inside;
 }
 
