@@ -88,6 +88,12 @@ Eigen::VectorXd stretch_masses(const TetMesh& mesh, const SurfaceMesh& surface,
   return m * (double(m.size()) / m.sum());
 }
 
+// From this many vertices linear_solver.method: auto builds the AMG hierarchy
+// while it decides: every volume-filled mesh this large goes iterative, and
+// of the shared meshes (all direct up to centaur's 17k) only cat0/cat1 (33k)
+// reach it, both iterative (docs/performance.md).
+constexpr int kSpeculativeAmgVertices = 20000;
+
 // The paper's method and the energy-term baselines: lambda_2, beta, the cascade,
 // on the vertices and edges of `mesh`.
 void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
@@ -100,14 +106,24 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
   // The solver is decided once here (it needs a symbolic analysis), for
   // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
   const Eigen::SparseMatrix<double> L = beta_laplacian(problem);
-  std::shared_ptr<AmgData> amg;
   LinearSolverOptions solver = options.linear_solver;
+  const auto amg_start = std::chrono::steady_clock::now();
+  const auto build_amg = [&L] {
+    auto amg = std::make_shared<AmgData>();
+    amg_precomputation(L, AmgOptions{}, amg.get());
+    return amg;
+  };
+  // auto's symbolic analysis and the AMG setup each run on one thread: from
+  // kSpeculativeAmgVertices on, where auto nearly always goes iterative, the
+  // hierarchy is built on the other core meanwhile (dropped if it goes direct).
+  std::future<std::shared_ptr<AmgData>> speculative_amg;
+  if (solver.method == "auto" && n >= kSpeculativeAmgVertices)
+    speculative_amg = std::async(std::launch::async, build_amg);
   solver.method = use_iterative_solver(solver, L) ? "iterative" : "direct";
   result.linear_solver = solver.method;
+  std::shared_ptr<AmgData> amg;
   if (result.linear_solver == "iterative") {
-    const auto amg_start = std::chrono::steady_clock::now();
-    amg = std::make_shared<AmgData>();
-    amg_precomputation(L, AmgOptions{}, amg.get());
+    amg = speculative_amg.valid() ? speculative_amg.get() : build_amg();
     result.amg_levels = int(amg->levels.size());
     result.seconds_amg = seconds_since(amg_start);
     result.lambda2 = fiedler_value(L, *amg, masses);
