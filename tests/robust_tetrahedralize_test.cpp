@@ -67,6 +67,27 @@ TEST(FastWindingNumber, MatchesTheExactSumInsideOutsideAndNearTheSurface) {
   EXPECT_LT(inside, 1800);
 }
 
+// Queries go down the tree in packets; a query's value must not depend on the
+// others in its packet (nor on how many there are).
+TEST(FastWindingNumber, AQuerysValueDoesNotDependOnItsPacket) {
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 24);
+  const FastWindingNumberTree tree =
+      fast_winding_number_precomputation(shape.V, triangulate_faces(shape));
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  Eigen::MatrixX3d Q(203, 3);  // not a multiple of the packet size
+  for (Eigen::Index i = 0; i < Q.rows(); ++i)
+    Q.row(i) = shape.V.row(i * 7 % shape.V.rows()) +
+               0.05 * Eigen::RowVector3d(unit(random), unit(random), unit(random));
+  const Eigen::VectorXd together = fast_winding_number_solve(tree, Q);
+  const Eigen::VectorXd coarse = fast_winding_number_classify(tree, Q);
+  for (Eigen::Index i = 0; i < Q.rows(); i += 5) {
+    const Eigen::MatrixX3d alone = Q.row(i);
+    EXPECT_EQ(fast_winding_number_solve(tree, alone)(0), together(i)) << i;
+    EXPECT_EQ(fast_winding_number_classify(tree, alone)(0), coarse(i)) << i;
+  }
+}
+
 TEST(FastWindingNumber, ClassifyDecidesLikeTheAccurateTreeAndRefinesNearOneHalf) {
   // A surface with a large hole (the faces right of the middle dropped): near
   // the hole w runs smoothly through 1/2, as at the robust route's holes and
