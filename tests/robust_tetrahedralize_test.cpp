@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/parallel.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
 #include "pipeline/unfold_surface.h"
@@ -214,6 +215,44 @@ TEST(RobustTetrahedralize, AutoGoesRobustWithoutTryingOnASelfIntersectingSurface
   TetOptions conforming;
   conforming.route = "conforming";
   EXPECT_THROW(tetrahedralize(folded, conforming), NumericalError);
+}
+
+// From kMinParallelRows vertices auto takes the robust route's first steps
+// while it counts intersecting faces: a clean surface still goes conforming,
+// a self-intersecting one gets the robust route's very tets.
+TEST(RobustTetrahedralize, AutoOnLargeSurfacesDecidesAsOnSmallOnes) {
+  const SurfaceMesh sphere = test::uv_sphere(65, 130);
+  ASSERT_GE(sphere.V.rows(), kMinParallelRows);
+  TetReport report;
+  TetOptions conforming;
+  conforming.route = "conforming";
+  const TetMesh automatic = tetrahedralize(sphere, TetOptions{}, &report);
+  EXPECT_EQ(report.route, "conforming");
+  EXPECT_EQ(report.fallback, "");
+  const TetMesh expected = tetrahedralize(sphere, conforming);
+  EXPECT_EQ(automatic.V, expected.V);
+  EXPECT_EQ(automatic.T, expected.T);
+
+  SurfaceMesh two = test::uv_sphere(46, 92);  // two overlapping spheres
+  const int n = int(two.V.rows());
+  two.V.conservativeResize(2 * n, 3);
+  two.V.bottomRows(n) = two.V.topRows(n).rowwise() + Eigen::RowVector3d(1.0, 0.1, 0.0);
+  for (size_t f = 0, count = two.faces.size(); f < count; ++f) {
+    std::vector<int> face = two.faces[f];
+    for (int& v : face) v += n;
+    two.faces.push_back(face);
+  }
+  ASSERT_GE(two.V.rows(), kMinParallelRows);
+  TetOptions robust;
+  robust.route = "robust";
+  TetReport robust_report;
+  const TetMesh folded = tetrahedralize(two, TetOptions{}, &report);
+  const TetMesh direct = tetrahedralize(two, robust, &robust_report);
+  EXPECT_EQ(report.route, "robust");
+  EXPECT_GT(report.num_intersecting_faces, 0);
+  EXPECT_EQ(report.num_intersecting_faces, robust_report.num_intersecting_faces);
+  EXPECT_EQ(folded.V, direct.V);
+  EXPECT_EQ(folded.T, direct.T);
 }
 
 // Vertex 0 copied: the copy takes over half of vertex 0's faces, so the two

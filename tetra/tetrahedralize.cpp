@@ -3,8 +3,11 @@
 #include <glog/logging.h>
 
 #include <chrono>
+#include <future>
+#include <optional>
 
 #include "core/errors.h"
+#include "core/parallel.h"
 #include "mesh/position_order.h"
 #include "tetra/intersecting_faces.h"
 
@@ -33,18 +36,34 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   TetReport local;
   TetReport& r = report ? *report : local;
   r = TetReport();
+  if (options.route != "conforming" && options.route != "robust" && options.route != "auto")
+    throw UsageError("unknown tetrahedralization route '" + options.route +
+                     "' (known: auto, conforming, robust)");
   // Counted on every route: a fraction of a second on 55k faces, and it says
-  // why auto falls back (TetGen's conforming mode refuses any such pair).
-  r.num_intersecting_faces =
-      int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
+  // why auto falls back (TetGen's conforming mode refuses any such pair). From
+  // kMinParallelRows vertices the robust route's first steps are taken on the
+  // other core meanwhile, speculatively for auto (most real scans go robust; a
+  // clean surface drops them).
+  auto count = std::async(std::launch::async, [&surface] {
+    return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
+  });
+  std::optional<RobustStart> first_steps;
+  if (options.route == "robust" ||
+      (options.route == "auto" && surface.V.rows() >= kMinParallelRows))
+    first_steps = robust_start(surface);
+  r.num_intersecting_faces = count.get();
+  const auto robust = [&] {
+    if (!first_steps) first_steps = robust_start(surface);
+    r.route = "robust";
+    return tetrahedralize_robust(surface, *first_steps, &r);
+  };
   TetMesh tets;
   if (options.route == "conforming") {
     tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
     r.route = "conforming";
   } else if (options.route == "robust") {
-    tets = tetrahedralize_robust(surface, &r);
-    r.route = "robust";
-  } else if (options.route == "auto") {
+    tets = robust();
+  } else {
     // Most real scans intersect themselves: TetGen would only refuse them,
     // after seconds of work (docs/tetrahedralization.md).
     r.fallback = not_a_plc(surface, r.num_intersecting_faces);
@@ -59,12 +78,8 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
     if (r.route.empty()) {
       LOG(INFO) << "no conforming tetrahedralization (" << r.fallback
                 << "); using the robust route";
-      tets = tetrahedralize_robust(surface, &r);
-      r.route = "robust";
+      tets = robust();
     }
-  } else {
-    throw UsageError("unknown tetrahedralization route '" + options.route +
-                     "' (known: auto, conforming, robust)");
   }
   r.num_tets = int(tets.T.rows());
   r.num_interior_points = int(tets.V.rows()) - tets.num_surface_vertices;

@@ -7,6 +7,7 @@
 
 #include "mesh/surface_mesh.h"
 #include "mesh/tet_mesh.h"
+#include "tetra/fast_winding_number.h"
 
 namespace unfold {
 
@@ -63,6 +64,25 @@ TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality,
 /// @throws InputError for fewer than 4 vertices or no faces, NumericalError if
 ///         TetGen fails or a surface vertex is in no usable tetrahedron
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report = nullptr);
+
+/// The robust route's first steps, which need the surface alone: tetrahedralize()
+/// takes them while it counts intersecting faces (on the other core), before it
+/// knows whether auto goes robust.
+struct RobustStart {
+  FastWindingNumberTree tree;  ///< over the surface's triangles
+  double orientation = 1;      ///< -1 for an inward-oriented surface (negative volume)
+  double mean_edge_length = 0;
+  Eigen::MatrixX3d interior;  ///< the interior grid points (sheared)
+  double seconds = 0;
+};
+
+/// @throws InputError for fewer than 4 vertices or no faces
+RobustStart robust_start(const SurfaceMesh& surface);
+
+/// tetrahedralize_robust from its first steps, `start` = robust_start(surface).
+/// @throws as tetrahedralize_robust
+TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& start,
+                              TetReport* report);
 
 /// The robust route's interior grid is a cubic lattice sheared by this much:
 /// lattice point (x, y, z) (in cells, in TetGen's input order x, then y, then

@@ -122,28 +122,44 @@ struct UnionFind {
 
 }  // namespace
 
-TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
-  auto clock = std::chrono::steady_clock::now();
-  const int n = int(surface.V.rows());
+RobustStart robust_start(const SurfaceMesh& surface) {
+  const auto clock = std::chrono::steady_clock::now();
+  RobustStart start;
   const Eigen::MatrixX3i F = triangulate_faces(surface);
-  if (n < 4 || F.rows() == 0)
+  if (surface.V.rows() < 4 || F.rows() == 0)
     throw InputError(
         "tetrahedralization (robust route): the surface has fewer than 4 vertices "
         "or no faces");
-  const double length = mean_edge_length(surface.V, F);
-  const FastWindingNumberTree tree = fast_winding_number_precomputation(surface.V, F);
+  start.mean_edge_length = mean_edge_length(surface.V, F);
+  start.tree = fast_winding_number_precomputation(surface.V, F);
   // Winding numbers are -1 inside an inward-oriented surface: the signed volume decides.
   double volume = 0;
   for (Eigen::Index t = 0; t < F.rows(); ++t)
     volume += surface.V.row(F(t, 0)).dot(surface.V.row(F(t, 1)).cross(surface.V.row(F(t, 2))));
-  const double orientation = volume < 0 ? -1 : 1;
-
+  start.orientation = volume < 0 ? -1 : 1;
   // Interior points at three times the mean edge length: measured on the
   // TOSCA/FAUST meshes (docs/tetrahedralization.md), lower E_rig than twice it
   // and a third of the interior points.
-  const Eigen::MatrixX3d interior = interior_grid_points(surface.V, tree, orientation, 3 * length);
-  const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * length);
-  const double seconds_points = lap(&clock);
+  start.interior =
+      interior_grid_points(surface.V, start.tree, start.orientation, 3 * start.mean_edge_length);
+  start.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  return start;
+}
+
+TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
+  return tetrahedralize_robust(surface, robust_start(surface), report);
+}
+
+TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& start,
+                              TetReport* report) {
+  auto clock = std::chrono::steady_clock::now();
+  const int n = int(surface.V.rows());
+  const Eigen::MatrixX3i F = triangulate_faces(surface);
+  const FastWindingNumberTree& tree = start.tree;
+  const double orientation = start.orientation;
+  const Eigen::MatrixX3d& interior = start.interior;
+  const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * start.mean_edge_length);
+  const double seconds_points = start.seconds + lap(&clock);
   tetgenio in;
   in.firstnumber = 0;
   in.numberofpoints = int(n + interior.rows());
