@@ -9,7 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
-#include <unordered_map>
 #include <vector>
 
 #include "core/errors.h"
@@ -61,16 +60,33 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
                                       double orientation, double spacing) {
   const Eigen::RowVector3d low = V.colwise().minCoeff(), high = V.colwise().maxCoeff();
   const Eigen::Array3i cells = ((high - low) / spacing).array().ceil().cast<int>().max(1);
-  // Surface vertices hashed into cells of the grid spacing, for the distance test.
-  std::unordered_map<int64_t, std::vector<int>> buckets;
+  // Surface vertices sorted into the grid's cells (one cell of margin all
+  // round), for the distance test: a cell's vertices are
+  // vertex_of[first[c], first[c + 1]).
   const auto cell_of = [&](const Eigen::RowVector3d& p) {
     return Eigen::Array3i(((p - low) / spacing).array().floor().cast<int>());
   };
   const auto key = [&](const Eigen::Array3i& c) {
     return (int64_t(c(0) + 1) * (cells(1) + 3) + (c(1) + 1)) * (cells(2) + 3) + (c(2) + 1);
   };
-  for (int i = 0; i < int(V.rows()); ++i) buckets[key(cell_of(V.row(i)))].push_back(i);
-  std::vector<Eigen::RowVector3d> candidates, shifts;
+  const int64_t num_keys = int64_t(cells(0) + 3) * (cells(1) + 3) * (cells(2) + 3);
+  std::vector<int> first(size_t(num_keys) + 1, 0), vertex_of(size_t(V.rows()));
+  std::vector<int64_t> vertex_key(size_t(V.rows()));
+  for (int i = 0; i < int(V.rows()); ++i) {
+    vertex_key[size_t(i)] = key(cell_of(V.row(i)));
+    ++first[size_t(vertex_key[size_t(i)]) + 1];
+  }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  {
+    std::vector<int> next(first.begin(), first.end() - 1);
+    for (int i = 0; i < int(V.rows()); ++i)
+      vertex_of[size_t(next[size_t(vertex_key[size_t(i)])]++)] = i;
+  }
+  // Each x slab on its own (in parallel), joined in x order: the order of the
+  // points, which TetGen's tie-breaking sees, is the serial loop's.
+  std::vector<std::vector<Eigen::RowVector3d>> slab_points(size_t(cells(0))),
+      slab_shifts(size_t(cells(0)));
+#pragma omp parallel for schedule(dynamic, 1)
   for (int x = 0; x < cells(0); ++x)
     for (int y = 0; y < cells(1); ++y)
       for (int z = 0; z < cells(2); ++z) {
@@ -80,19 +96,22 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
         for (int dx = -1; dx <= 1 && far; ++dx)
           for (int dy = -1; dy <= 1 && far; ++dy)
             for (int dz = -1; dz <= 1 && far; ++dz) {
-              const auto it = buckets.find(key(c + Eigen::Array3i(dx, dy, dz)));
-              if (it == buckets.end()) continue;
-              for (int i : it->second)
-                if ((V.row(i) - p).norm() < spacing / 2) {
-                  far = false;
-                  break;
-                }
+              const int64_t k = key(c + Eigen::Array3i(dx, dy, dz));
+              for (int j = first[size_t(k)]; j < first[size_t(k) + 1] && far; ++j)
+                far = !((V.row(vertex_of[size_t(j)]) - p).norm() < spacing / 2);
             }
         if (far) {
-          candidates.push_back(p);
-          shifts.push_back(kInteriorGridShear * spacing * Eigen::RowVector3d(y + z, x + z, x + y));
+          slab_points[size_t(x)].push_back(p);
+          slab_shifts[size_t(x)].push_back(kInteriorGridShear * spacing *
+                                           Eigen::RowVector3d(y + z, x + z, x + y));
         }
       }
+  std::vector<Eigen::RowVector3d> candidates, shifts;
+  for (int x = 0; x < cells(0); ++x) {
+    candidates.insert(candidates.end(), slab_points[size_t(x)].begin(),
+                      slab_points[size_t(x)].end());
+    shifts.insert(shifts.end(), slab_shifts[size_t(x)].begin(), slab_shifts[size_t(x)].end());
+  }
   Eigen::MatrixX3d Q(candidates.size(), 3);
   for (size_t k = 0; k < candidates.size(); ++k) Q.row(Eigen::Index(k)) = candidates[k];
   const Eigen::VectorXd w = orientation * fast_winding_number_classify(tree, Q);
