@@ -80,6 +80,29 @@ TEST(Amg, VCycleIsSymmetricAndPositiveDefiniteOnZeroMeanBlocks) {
   EXPECT_GT((single - exact).norm(), 0);  // the float cycle really runs
 }
 
+// Every smoothing degree keeps the cycle symmetric (the same Chebyshev
+// polynomial before and after the coarse correction), degree 1 and 3 included.
+TEST(Amg, VCycleIsSymmetricForEverySmoothingDegree) {
+  const LaplacianFixture f(bar());
+  const RowMatrixX3d x = random_zero_mean(f.n, 4), y = random_zero_mean(f.n, 5);
+  for (const int degree : {1, 2, 3}) {
+    AmgOptions options;
+    options.single_precision = false;
+    options.smoothing_degree = degree;
+    AmgData amg;
+    amg_precomputation(f.L, options, &amg);
+    RowMatrixX3d Bx, By;
+    amg_vcycle(amg, x, &Bx);
+    amg_vcycle(amg, y, &By);
+    const Eigen::Array3d yBx = column_dots(y, Bx), xBy = column_dots(x, By);
+    const Eigen::Array3d xBx = column_dots(x, Bx);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(yBx[k], xBy[k], 1e-10 * xBx[k]) << "degree " << degree;
+      EXPECT_GT(xBx[k], 0) << "degree " << degree;
+    }
+  }
+}
+
 TEST(Amg, AsAStationaryIterationItConverges) {
   const LaplacianFixture f(bar());
   const RowMatrixX3d b = random_zero_mean(f.n, 3);
