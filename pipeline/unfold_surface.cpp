@@ -6,6 +6,8 @@
 #include <chrono>
 #include <future>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "core/errors.h"
 #include "core/parallel.h"
@@ -107,25 +109,26 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
   // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
   const Eigen::SparseMatrix<double> L = beta_laplacian(problem);
   LinearSolverOptions solver = options.linear_solver;
-  const auto amg_start = std::chrono::steady_clock::now();
+  // The AMG hierarchy, and the seconds its build took.
   const auto build_amg = [&L] {
+    const auto build_start = std::chrono::steady_clock::now();
     auto amg = std::make_shared<AmgData>();
     amg_precomputation(L, AmgOptions{}, amg.get());
-    return amg;
+    return std::make_pair(std::move(amg), seconds_since(build_start));
   };
   // auto's symbolic analysis and the AMG setup each run on one thread: from
   // kSpeculativeAmgVertices on, where auto nearly always goes iterative, the
   // hierarchy is built on the other core meanwhile (dropped if it goes direct).
-  std::future<std::shared_ptr<AmgData>> speculative_amg;
+  std::future<std::pair<std::shared_ptr<AmgData>, double>> speculative_amg;
   if (solver.method == "auto" && n >= kSpeculativeAmgVertices)
     speculative_amg = std::async(std::launch::async, build_amg);
   solver.method = use_iterative_solver(solver, L) ? "iterative" : "direct";
   result.linear_solver = solver.method;
   std::shared_ptr<AmgData> amg;
   if (result.linear_solver == "iterative") {
-    amg = speculative_amg.valid() ? speculative_amg.get() : build_amg();
+    std::tie(amg, result.seconds_amg) =
+        speculative_amg.valid() ? speculative_amg.get() : build_amg();
     result.amg_levels = int(amg->levels.size());
-    result.seconds_amg = seconds_since(amg_start);
     result.lambda2 = fiedler_value(L, *amg, masses);
   } else {
     result.lambda2 = fiedler_value(L, masses);
