@@ -53,23 +53,12 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
 TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality,
                                   double max_volume = 0);
 
-/// Delaunay tetrahedralization (TetGen point mode) of the surface vertices and
-/// interior grid points (spacing three times the mean edge length), keeping the tets
-/// inside by the generalized winding number: at the centroid, and at the
-/// midpoint of every edge joining two surface vertices that is not a surface
-/// edge (so tets bridging two touching parts are carved). Works on
-/// self-intersecting, non-manifold or slightly open surfaces; vertices and
-/// faces are used as given, equal positions included.
-/// @param report if not null, receives num_removed_tets and num_rescued_tets
-/// @throws InputError for fewer than 4 vertices or no faces, NumericalError if
-///         TetGen fails or a surface vertex is in no usable tetrahedron
-TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report = nullptr);
-
-/// The robust route's first steps, which need the surface alone: tetrahedralize()
-/// takes them while it counts intersecting faces (on the other core), before it
-/// knows whether auto goes robust.
+/// The robust route's first steps, which need the surface alone: the
+/// winding-number tree, the orientation and the interior grid points.
+/// tetrahedralize() takes them while it counts intersecting faces (on the other
+/// core), before it knows whether auto goes robust.
 struct RobustStart {
-  FastWindingNumberTree tree;  ///< over the surface's triangles
+  FastWindingNumberTree tree;  ///< over the surface's triangles (tree.F)
   double orientation = 1;      ///< -1 for an inward-oriented surface (negative volume)
   double mean_edge_length = 0;
   Eigen::MatrixX3d interior;  ///< the interior grid points (sheared)
@@ -79,10 +68,20 @@ struct RobustStart {
 /// @throws InputError for fewer than 4 vertices or no faces
 RobustStart robust_start(const SurfaceMesh& surface);
 
-/// tetrahedralize_robust from its first steps, `start` = robust_start(surface).
-/// @throws as tetrahedralize_robust
+/// Delaunay tetrahedralization (TetGen point mode) of the surface vertices and
+/// interior grid points (spacing three times the mean edge length), keeping the tets
+/// inside by the generalized winding number: at the centroid, and at the
+/// midpoint of every edge joining two surface vertices that is not a surface
+/// edge (so tets bridging two touching parts are carved). Works on
+/// self-intersecting, non-manifold or slightly open surfaces; vertices and
+/// faces are used as given, equal positions included.
+/// @param start robust_start(surface)
+/// @param report if not null, receives num_removed_tets and num_rescued_tets
+/// @throws NumericalError if TetGen fails or a surface vertex is in no usable
+///         tetrahedron (robust_start throws InputError for fewer than 4
+///         vertices or no faces)
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& start,
-                              TetReport* report);
+                              TetReport* report = nullptr);
 
 /// The robust route's interior grid is a cubic lattice sheared by this much:
 /// lattice point (x, y, z) (in cells, in TetGen's input order x, then y, then

@@ -142,7 +142,7 @@ struct UnionFind {
 }  // namespace
 
 RobustStart robust_start(const SurfaceMesh& surface) {
-  const auto clock = std::chrono::steady_clock::now();
+  auto clock = std::chrono::steady_clock::now();
   RobustStart start;
   const Eigen::MatrixX3i F = triangulate_faces(surface);
   if (surface.V.rows() < 4 || F.rows() == 0)
@@ -161,20 +161,16 @@ RobustStart robust_start(const SurfaceMesh& surface) {
   // and a third of the interior points.
   start.interior =
       interior_grid_points(surface.V, start.tree, start.orientation, 3 * start.mean_edge_length);
-  start.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  start.seconds = lap(&clock);
   return start;
-}
-
-TetMesh tetrahedralize_robust(const SurfaceMesh& surface, TetReport* report) {
-  return tetrahedralize_robust(surface, robust_start(surface), report);
 }
 
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& start,
                               TetReport* report) {
   auto clock = std::chrono::steady_clock::now();
   const int n = int(surface.V.rows());
-  const Eigen::MatrixX3i F = triangulate_faces(surface);
   const FastWindingNumberTree& tree = start.tree;
+  const Eigen::MatrixX3i& F = tree.F;
   const double orientation = start.orientation;
   const Eigen::MatrixX3d& interior = start.interior;
   const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * start.mean_edge_length);
