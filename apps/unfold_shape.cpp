@@ -1,16 +1,19 @@
 // Writes the built-in articulated demo shape in a chosen pose:
-//   unfold_shape --pose rest|0|1|2 --resolution N --output shape.off
+//   unfold_shape --pose rest|0|1|2|contact0|contact1 --resolution N --output shape.off
 #include "apps/app_main.h"
 #include "mesh/write_surface_mesh.h"
 #include "shapes/articulated_shape.h"
 
-DEFINE_string(pose, "rest", "pose: rest, or a preset index 0, 1, 2");
+DEFINE_string(
+    pose, "rest",
+    "pose: rest, a preset index 0, 1, 2, or contact0, contact1 (the body touching itself)");
 DEFINE_int32(resolution, unfold::kDefaultShapeResolution,
              "edges along the body length, in [16, 128] (about N^2 vertices)");
 DEFINE_string(output, "", "output mesh (.off .obj .ply .stl), required");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage("unfold_shape --pose rest|0|1|2 --resolution N --output shape.off");
+  gflags::SetUsageMessage(
+      "unfold_shape --pose rest|0|1|2|contact0|contact1 --resolution N --output shape.off");
   return unfold::app::run_main("unfold_shape", argc, argv, [] {
     if (FLAGS_output.empty()) throw unfold::UsageError("--output is required");
     unfold::check_surface_mesh_format(FLAGS_output);

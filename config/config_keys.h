@@ -20,6 +20,9 @@
   X(fallback_surface_graph, "tetrahedralize.fallback_surface_graph", fallback_surface_graph,     \
     "when no tet mesh can be made (TetGen fails, open surface), unfold on the surface's own "    \
     "edge graph with a warning instead of failing")                                              \
+  X(tet_shape, "tetrahedralize.shape", tet_shape,                                                \
+    "domain: surface: tetrahedralize the input, or the surface solve's unfolded shape and put "  \
+    "its interior back into the input (unfolded: parts touching in the input stay apart)")       \
   X(components, "components", components,                                                        \
     "several connected components: refuse (error naming the count) or separately (each "         \
     "unfolded on its own, put back together in input order)")                                    \
@@ -69,7 +72,7 @@
     "weight k of the stretch term (paper: 1)")                                                   \
   X(stretch_masses, "stretch.masses", energy.stretch_masses,                                     \
     "stretch term's vertex weights: uniform (paper) or lumped (each vertex's share of the "      \
-    "volume or, with domain: surface, of the area: independent of where the mesh is dense)")    \
+    "volume or, with domain: surface, of the area: independent of where the mesh is dense)")     \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")   \
   X(arap_weights, "arap.weights", energy.arap_weights,                                           \
     "ARAP edge weights w_ij: uniform (paper) or cotangent")                                      \

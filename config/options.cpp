@@ -226,6 +226,12 @@ void validate_options(const Options& o) {
           "must be refuse or separately, got '" + o.components + "'");
   require(o.domain == "volume" || o.domain == "surface", "domain",
           "must be volume or surface, got '" + o.domain + "'");
+  require(o.tet_shape == "input" || o.tet_shape == "unfolded", "tetrahedralize.shape",
+          "must be input or unfolded, got '" + o.tet_shape + "'");
+  require(o.tet_shape == "input" || (o.domain == "surface" && o.method != "lsmds"),
+          "tetrahedralize.shape",
+          "unfolded needs domain: surface (the surface solve it "
+          "tetrahedralizes) and a method other than lsmds");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
@@ -292,6 +298,11 @@ void validate_options(const Options& o) {
   validate_linear_solver_options(o.linear_solver);
   validate_ceres_options(o.ceres);
   validate_lsmds_options(o.lsmds);
+}
+
+bool tets_from_unfolded(const Options& options) {
+  return options.tet_shape == "unfolded" && options.domain == "surface" &&
+         options.method != "lsmds";
 }
 
 bool computes_metric(const Options& options, const std::string& name) {

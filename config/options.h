@@ -25,6 +25,9 @@ struct Options {
   bool fallback_surface_graph = false;  ///< no tet mesh possible: unfold the surface edge graph
   std::string components = "refuse";    ///< several components: "refuse" or "separately"
   std::string domain = "volume";        ///< "volume" (tet mesh, the paper's) or "surface"
+  /// domain surface: the tet mesh of the "input" or of the surface solve ("unfolded",
+  /// which joins no parts that touch in the input; solvers/tetrahedralize_unfolded.h)
+  std::string tet_shape = "input";
   std::string beta_mode = "relative";
   double beta_value = 1.5;
   bool raise_beta_to_bound = true;    ///< a starting beta below the bound is raised above it
@@ -52,6 +55,10 @@ void validate_options(const Options& options);
 
 /// Whether options.metrics asks for the metric `name` ("E_rig", "E_str" or "E_geo").
 bool computes_metric(const Options& options, const std::string& name);
+
+/// Whether the tet mesh is made from the surface solve's unfolded shape
+/// (tetrahedralize.shape: unfolded with domain: surface), not from the input.
+bool tets_from_unfolded(const Options& options);
 
 /// The options as a YAML document with every key (the effective configuration).
 std::string options_to_yaml(const Options& options);

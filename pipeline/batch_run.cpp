@@ -127,7 +127,8 @@ std::optional<BatchRow> read_row_file(const std::string& path) {
 // The preparation (simplify, tetrahedralize) depends on these keys only.
 std::string preparation_key(const Options& o) {
   std::ostringstream s;
-  s << o.target_vertices << '|' << o.tet.route << '|' << std::setprecision(17) << o.tet.quality;
+  s << o.target_vertices << '|' << o.tet.route << '|' << std::setprecision(17) << o.tet.quality
+    << '|' << tets_from_unfolded(o);
   return s.str();
 }
 

@@ -56,6 +56,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                         {"rescued_tets", r.tet_report.num_rescued_tets},
                                         {"intersecting_faces", r.tet_report.num_intersecting_faces},
                                         {"fallback", r.tet_report.fallback},
+                                        {"shape", r.tet_report.shape},
+                                        {"inverted_rest_tets", r.tet_report.inverted_rest_tets},
                                         {"seconds", r.tet_report.seconds}}},
       {"seconds_tetrahedralize", r.tet_report.seconds},
       {"seconds_unfold", r.seconds_unfold},

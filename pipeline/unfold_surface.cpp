@@ -30,6 +30,7 @@
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
 #include "solvers/make_backend.h"
+#include "solvers/tetrahedralize_unfolded.h"
 
 namespace unfold {
 namespace {
@@ -48,6 +49,15 @@ void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {
     if ((V.row(graph.edges(e, 0)) - V.row(graph.edges(e, 1))).norm() == 0)
       throw NumericalError("tet mesh edge " + std::to_string(graph.edges(e, 0)) + "-" +
                            std::to_string(graph.edges(e, 1)) + " has zero length");
+}
+
+// A TetMesh without tets: the surface's vertices alone.
+TetMesh surface_only(const SurfaceMesh& surface) {
+  TetMesh mesh;
+  mesh.V = surface.V;
+  mesh.T.resize(0, 4);
+  mesh.num_surface_vertices = int(surface.V.rows());
+  return mesh;
 }
 
 // The tet mesh of a closed surface; when none can be made (open surface,
@@ -69,13 +79,9 @@ TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const
   }
   warnings->push_back("no tet mesh (" + reason + "): unfolding on the surface edge graph");
   LOG(WARNING) << warnings->back();
-  TetMesh surface_only;
-  surface_only.V = surface.V;
-  surface_only.T.resize(0, 4);
-  surface_only.num_surface_vertices = int(surface.V.rows());
   *report = TetReport{};
   report->route = "surface_graph";
-  return surface_only;
+  return surface_only(surface);
 }
 
 // stretch.masses: lumped: the domain's lumped masses (tet volumes; the surface's
@@ -173,21 +179,47 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
 // edges, whose rest state barely changes with the pose (a bent knee's skin keeps
 // its lengths; its interior tets are bent); the interior then follows by ARAP
 // on the tet edges (docs/method.md, pose invariance).
-void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, UnfoldResult* out) {
-  UnfoldResult& result = *out;
+void solve_surface_cascade(const Options& options, UnfoldResult* out) {
   TetMesh surface;
-  surface.num_surface_vertices = result.tets.num_surface_vertices;
-  surface.V = result.tets.V.topRows(surface.num_surface_vertices);
+  surface.V = out->surface.V;
+  surface.num_surface_vertices = int(surface.V.rows());
   surface.T.resize(0, 4);
   const EdgeGraph surface_graph = build_edge_graph(
-      surface.num_surface_vertices, Eigen::MatrixXi(triangulate_faces(result.surface)));
+      surface.num_surface_vertices, Eigen::MatrixXi(triangulate_faces(out->surface)));
   check_tet_graph(surface_graph, surface.V);
   solve_cascade(surface_graph, surface, options, out);
+}
+
+void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, UnfoldResult* out) {
+  UnfoldResult& result = *out;
+  solve_surface_cascade(options, out);
+  const int num_surface = result.tets.num_surface_vertices;
   Eigen::MatrixX3d Q = result.tets.V.rowwise() - result.tets.V.colwise().mean();
-  Q.topRows(surface.num_surface_vertices) = result.cascade.positions;
+  Q.topRows(num_surface) = result.cascade.positions;
   ArapSolveOptions place;
-  place.num_fixed = surface.num_surface_vertices;
+  place.num_fixed = num_surface;
   result.cascade.positions = arap_solve(tet_graph, result.tets.V, std::move(Q), place);
+}
+
+// tetrahedralize.shape: unfolded. The surface solve S first, then the tet mesh
+// of S, its interior put back into the input (solvers/tetrahedralize_unfolded.h):
+// parts that touch in the input are joined by no tet. The result's tets become
+// that mesh, and the cascade's positions S's own tet mesh.
+void solve_on_unfolded_tets(const Options& options, UnfoldResult* out) {
+  UnfoldResult& result = *out;
+  solve_surface_cascade(options, out);
+  const auto start = std::chrono::steady_clock::now();
+  UnfoldedTetMesh unfolded =
+      tetrahedralize_unfolded(result.surface, result.cascade.positions, options.tet);
+  result.tets = std::move(unfolded.rest);
+  result.tet_report = unfolded.report;
+  result.tet_report.seconds = seconds_since(start);
+  result.cascade.positions = unfolded.unfolded.rowwise() - unfolded.unfolded.colwise().mean();
+  result.unfolded_tet_positions = std::move(unfolded.unfolded);
+  LOG(INFO) << "tetrahedralized the unfolded shape (" << result.tet_report.route
+            << "): " << result.tets.V.rows() << " vertices, " << result.tets.T.rows() << " tets in "
+            << result.tet_report.seconds << " s, " << result.tet_report.inverted_rest_tets
+            << " inverted at rest";
 }
 
 // integrate: the cascade's rotation field integrated on the whole tet mesh
@@ -276,6 +308,12 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
     prepared.surface = input;
   }
 
+  if (tets_from_unfolded(options) && !open) {
+    // made after the surface solve, by unfold_prepared
+    prepared.tets = surface_only(prepared.surface);
+    prepared.tets_deferred = true;
+    return prepared;
+  }
   prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options, &prepared.tet_report,
                                               &prepared.warnings);
   sort_interior_vertices(&prepared.tets);
@@ -294,6 +332,18 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   result.warnings = prepared.warnings;
 
   const auto start = std::chrono::steady_clock::now();
+  // A prepared mesh serves every config of a batch or a comparison: the
+  // unfolded shape's tets are made here whatever it holds, the input's only
+  // if it was deferred.
+  const bool on_unfolded =
+      tets_from_unfolded(options) && (prepared.tets_deferred || prepared.tets.T.rows() > 0);
+  if (on_unfolded) {
+    solve_on_unfolded_tets(options, &result);
+  } else if (prepared.tets_deferred) {
+    result.tets = tetrahedralize_or_fall_back(result.surface, false, options, &result.tet_report,
+                                              &result.warnings);
+    sort_interior_vertices(&result.tets);
+  }
   const EdgeGraph graph = build_edge_graph(
       int(result.tets.V.rows()), result.tets.T.rows() > 0
                                      ? Eigen::MatrixXi(result.tets.T)
@@ -303,6 +353,8 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   std::future<GeodesicRows> geodesic_rows = start_geodesic_rows(graph, result.tets.V, options);
   if (options.method == "lsmds") {
     result.cascade = lsmds_cascade_result(graph, result.tets.V, options.lsmds);
+  } else if (on_unfolded) {
+    // the surface solve ran above, before its tets could be made
   } else if (options.domain == "surface" && result.tets.T.rows() > 0) {
     solve_on_surface(graph, options, &result);
   } else {
@@ -347,7 +399,10 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
     m.E_geo = geo.value;
     m.E_geo_exact = geo.exact;
   }
-  m.inverted_tets = count_inverted_tets(P, Q, result.tets.T);
+  // Against the orientation the tets were made with.
+  m.inverted_tets = count_inverted_tets(
+      result.unfolded_tet_positions.rows() > 0 ? result.unfolded_tet_positions : P, Q,
+      result.tets.T);
   m.seconds = seconds_since(metrics_start);
   return result;
 }

@@ -22,7 +22,7 @@ struct UnfoldMetrics {
   bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
   double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
-  int inverted_tets = 0;    ///< tetrahedra whose orientation flipped
+  int inverted_tets = 0;    ///< tetrahedra whose orientation flipped (from how they were made)
   double seconds = 0;
   /// E_rig's term of each tet vertex (RigidityError); NaN when E_rig is not computed
   Eigen::VectorXd rigidity_per_vertex;
@@ -32,7 +32,10 @@ struct UnfoldMetrics {
 /// solver run on it shares.
 struct PreparedMesh {
   SurfaceMesh surface;  ///< the surface unfolded (the input, or its simplification)
+  /// the input's tet mesh; the surface alone (no tets) when the options
+  /// tetrahedralize the unfolded shape instead (tets_deferred)
   TetMesh tets;
+  bool tets_deferred = false;
   TetReport tet_report;
   std::vector<std::string> warnings;
 };
@@ -42,6 +45,9 @@ struct UnfoldResult {
   SurfaceMesh canonical;           ///< same faces, canonical positions
   TetMesh tets;                    ///< rest tet mesh
   Eigen::MatrixX3d tet_canonical;  ///< canonical positions of every tet vertex
+  /// tetrahedralize.shape: unfolded: the tet vertices where the tets were made
+  /// (the surface solve's shape; metrics.inverted_tets is counted against it); else empty
+  Eigen::MatrixX3d unfolded_tet_positions;
   TetReport tet_report;
   int num_edges = 0;
   double lambda2 = 0;

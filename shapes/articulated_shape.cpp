@@ -206,8 +206,34 @@ ShapePose ShapePose::named(const std::string& name) {
   if (name == "rest") return rest();
   for (int k = 0; k < num_presets(); ++k)
     if (name == std::to_string(k)) return preset(k);
-  throw UsageError("unknown pose '" + name + "' (use rest or a preset index 0.." +
-                   std::to_string(num_presets() - 1) + ")");
+  for (int k = 0; k < num_contact_poses(); ++k)
+    if (name == "contact" + std::to_string(k)) return contact(k);
+  throw UsageError("unknown pose '" + name + "' (use rest, a preset index 0.." +
+                   std::to_string(num_presets() - 1) + " or contact0..contact" +
+                   std::to_string(num_contact_poses() - 1) + ")");
+}
+
+int ShapePose::num_contact_poses() { return 2; }
+
+ShapePose ShapePose::contact(int k) {
+  ShapePose p;
+  switch (k) {
+    case 0:  // lying down: left hind leg brought forward, its paw pressed against the belly
+      p.neck_pitch = 10, p.head_pitch = -15, p.tail_pitch = -15, p.tail_yaw = 20;
+      p.hind_left = {60, 0, -48};
+      p.front_left = {20, 0, 30};
+      break;
+    case 1:  // front legs crossed through each other, head turned
+      p.neck_yaw = -25, p.head_pitch = 10, p.tail_yaw = -30, p.tail_tip_yaw = 30;
+      p.front_left = {0, -25, 10};
+      p.front_right = {10, -25, 0};
+      p.hind_left = {-15, 5, -20};
+      break;
+    default:
+      throw UsageError("ShapePose::contact: k = " + std::to_string(k) + " is not in [0, " +
+                       std::to_string(num_contact_poses()) + ")");
+  }
+  return p;
 }
 
 ShapePose ShapePose::preset(int k) {

@@ -39,7 +39,16 @@ struct ShapePose {
   static ShapePose preset(int k);
   /// Number of presets.
   static int num_presets();
-  /// "rest" or a preset index ("0", "1", ...), as command lines name poses.
+  /// Poses where the body touches itself, as real scans do (docs/method.md,
+  /// contact): 0, a hind paw pressed against the belly; 1, the front legs
+  /// crossed through each other. Their surfaces intersect themselves.
+  /// @param k in [0, num_contact_poses())
+  /// @throws UsageError for k out of range
+  static ShapePose contact(int k);
+  /// Number of contact poses.
+  static int num_contact_poses();
+  /// "rest", a preset index ("0", "1", ...) or a contact pose ("contact0",
+  /// ...), as command lines name poses.
   /// @throws UsageError for any other name
   static ShapePose named(const std::string& name);
 };

@@ -53,24 +53,48 @@ TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
 // configs/invariant.yaml (a converged surface solve, its rotations integrated):
 // every pair of the demo shape's poses ends at most 0.3 times as far apart as
 // it started, with the input's local detail back (E_rig of the paper's order).
-TEST(PipelinePose, InvariantConfigGivesNearlyOneCanonicalForm) {
-  const Options invariant = load_options(UNFOLD_SOURCE_DIR "/configs/invariant.yaml");
+// configs/contact.yaml (the same on the unfolded shape's tets) does so with the
+// poses whose legs touch or pass through each other too; its tets were made on
+// a surface curved otherwise than the input (straight joints), so a few flat
+// ones come out inverted at rest and stay so (at most max_inverted of them).
+void expect_nearly_one_canonical_form(const std::string& config,
+                                      const std::vector<ShapePose>& shape_poses,
+                                      double max_inverted = 0) {
+  const Options options = load_options(UNFOLD_SOURCE_DIR "/configs/" + config);
+  const int count = int(shape_poses.size());
   std::vector<SurfaceMesh> poses;
   std::vector<UnfoldResult> forms;
-  for (int pose = 0; pose < 3; ++pose) {
-    poses.push_back(make_articulated_shape(ShapePose::preset(pose)));
-    forms.push_back(unfold_surface(poses.back(), invariant));
-    EXPECT_LT(forms.back().metrics.E_rig, 0.7) << "pose " << pose;
-    EXPECT_EQ(forms.back().metrics.inverted_tets, 0) << "pose " << pose;
+  for (int pose = 0; pose < count; ++pose) {
+    poses.push_back(make_articulated_shape(shape_poses[size_t(pose)]));
+    forms.push_back(unfold_surface(poses.back(), options));
+    EXPECT_LT(forms.back().metrics.E_rig, 0.7) << config << ", pose " << pose;
+    EXPECT_LE(forms.back().metrics.inverted_tets, max_inverted * double(forms.back().tets.T.rows()))
+        << config << ", pose " << pose;
   }
-  for (int a = 0; a < 3; ++a)
-    for (int b = a + 1; b < 3; ++b) {
+  for (int a = 0; a < count; ++a)
+    for (int b = a + 1; b < count; ++b) {
       const double before = aligned_distance(poses[size_t(a)].V, poses[size_t(b)].V);
       const double after =
           aligned_distance(forms[size_t(a)].canonical.V, forms[size_t(b)].canonical.V);
-      EXPECT_LT(after, 0.3 * before)
-          << "poses " << a << ", " << b << ": " << before << " apart, canonical forms " << after;
+      EXPECT_LT(after, 0.3 * before) << config << ", poses " << a << ", " << b << ": " << before
+                                     << " apart, canonical forms " << after;
     }
+}
+
+std::vector<ShapePose> presets() {
+  std::vector<ShapePose> poses;
+  for (int k = 0; k < ShapePose::num_presets(); ++k) poses.push_back(ShapePose::preset(k));
+  return poses;
+}
+
+TEST(PipelinePose, InvariantConfigGivesNearlyOneCanonicalForm) {
+  expect_nearly_one_canonical_form("invariant.yaml", presets());
+}
+
+TEST(PipelinePose, ContactConfigGivesNearlyOneCanonicalFormWhereLegsTouch) {
+  std::vector<ShapePose> poses = presets();
+  for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
+  expect_nearly_one_canonical_form("contact.yaml", poses, 0.02);
 }
 
 TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {

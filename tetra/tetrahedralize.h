@@ -35,6 +35,12 @@ struct TetReport {
   /// tried ("" when it produced the mesh)
   std::string fallback;
   double seconds = 0;
+  /// what was tetrahedralized: "input", or "unfolded" (the surface solve's
+  /// shape, solvers/tetrahedralize_unfolded.h, which also fills the next field)
+  std::string shape = "input";
+  /// unfolded: tets whose orientation at rest (put back into the input) is not
+  /// the one they were made with
+  int inverted_rest_tets = 0;
 };
 
 /// Tetrahedralizes a closed surface.

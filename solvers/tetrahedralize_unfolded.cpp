@@ -1,0 +1,78 @@
+#include "solvers/tetrahedralize_unfolded.h"
+
+#include <cmath>
+#include <utility>
+
+#include "core/errors.h"
+#include "mesh/edge_graph.h"
+#include "mesh/sort_interior_vertices.h"
+#include "mesh/tet_volumes.h"
+#include "metrics/pose_invariance.h"
+#include "solvers/arap_solve.h"
+#include "solvers/sparse_ldlt.h"
+
+namespace unfold {
+namespace {
+
+// The interior rows of X (rows num_fixed and up) as the uniform-weight
+// harmonic extension of the held rows: ARAP's start, inside the input surface
+// wherever the surface is not too far from convex.
+void harmonic_fill(const EdgeGraph& graph, int num_fixed, Eigen::MatrixX3d* X) {
+  const int m = graph.num_vertices - num_fixed;
+  if (m == 0) return;
+  const Eigen::SparseMatrix<double> L = graph_laplacian(graph);
+  const Eigen::SparseMatrix<double> L_ii = L.bottomRightCorner(m, m);
+  const Eigen::SparseMatrix<double> L_ib = L.bottomLeftCorner(m, num_fixed);
+  SparseLdlt ldlt;
+  ldlt.analyze(L_ii);
+  try {
+    ldlt.factorize(L_ii);
+  } catch (const NumericalError&) {
+    throw NumericalError(
+        "the unfolded shape's tet mesh has interior vertices joined to no "
+        "surface vertex");
+  }
+  Eigen::MatrixX3d interior;
+  ldlt.solve(-(L_ib * X->topRows(num_fixed)), &interior);
+  X->bottomRows(m) = interior;
+}
+
+}  // namespace
+
+UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::MatrixX3d& S,
+                                        const TetOptions& options, int placement_iterations) {
+  const int ns = int(input.V.rows());
+  if (S.rows() != ns)
+    throw UsageError("tetrahedralize_unfolded: the unfolded surface has " +
+                     std::to_string(S.rows()) + " vertices, the input " + std::to_string(ns));
+  UnfoldedTetMesh out;
+  const SurfaceMesh unfolded{S, input.faces};
+  TetMesh tets = tetrahedralize(unfolded, options, &out.report);
+  sort_interior_vertices(&tets);
+  const int n = int(tets.V.rows());
+
+  // S is inflated (its edges about 2-3 times the input's): its tets, scaled to
+  // the input's area, are the shapes the interior keeps while it is put into
+  // the input (ARAP ignores rotation, not scale).
+  const Eigen::MatrixX3i F = triangulate_faces(input);
+  const double scale = std::sqrt(surface_area(input.V, F) / surface_area(S, F));
+  const Eigen::MatrixX3d reference = tets.V * scale;
+  const EdgeGraph graph = build_edge_graph(n, Eigen::MatrixXi(tets.T));
+  Eigen::MatrixX3d X(n, 3);
+  X.topRows(ns) = input.V;
+  harmonic_fill(graph, ns, &X);
+  if (n > ns) {
+    ArapSolveOptions place;
+    place.num_fixed = ns;
+    place.max_iterations = placement_iterations;
+    X = arap_solve(graph, reference, std::move(X), place);
+  }
+  out.report.shape = "unfolded";
+  out.report.inverted_rest_tets = count_inverted_tets(tets.V, X, tets.T);
+  out.unfolded = std::move(tets.V);
+  out.rest = std::move(tets);
+  out.rest.V = std::move(X);
+  return out;
+}
+
+}  // namespace unfold

@@ -1,0 +1,41 @@
+// The tet mesh of the unfolded surface, put back into the input (docs/method.md,
+// contact). Where an input's parts touch or pass through each other (a hand on
+// a thigh, crossed legs), any tet mesh of the input's volume joins them: its
+// tets bridge the contact, and a canonical form computed on it keeps the
+// contact. The surface solve S (domain: surface) is not fooled by contact, as
+// it uses the surface's own edges, and has its limbs apart. Tetrahedralizing S
+// gives tets that join only what the surface joins; their rest state is then
+// made by placing the interior vertices into the input's surface (ARAP, with
+// S's tets, scaled to the input's area, as the reference shape), so that parts
+// that touch in the input overlap there instead of being glued together
+// (the idea of Sacht et al., "Consistent volumetric discretizations inside
+// self-intersecting surfaces", SGP 2013, with S in place of their flow).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mesh/surface_mesh.h"
+#include "mesh/tet_mesh.h"
+#include "tetra/tetrahedralize.h"
+
+namespace unfold {
+
+struct UnfoldedTetMesh {
+  TetMesh rest;               ///< S's tets, the input's surface, the interior placed into it
+  Eigen::MatrixX3d unfolded;  ///< positions of rest's vertices in S (S's own tet mesh)
+  TetReport report;           ///< S's tetrahedralization, shape "unfolded", inverted_rest_tets
+};
+
+/// Tetrahedralizes the unfolded surface S and places its interior vertices
+/// into the input surface.
+/// @param input   the input surface (rest positions of the surface vertices)
+/// @param S       unfolded positions of the input's vertices (rows of input.V)
+/// @param options how S is tetrahedralized (route, quality)
+/// @param placement_iterations ARAP steps placing the interior into the input
+/// @return the rest tet mesh (surface rows = input.V) and its unfolded positions
+/// @throws UsageError if S's size is not input's, NumericalError if S cannot be
+///         tetrahedralized or the placement fails
+UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::MatrixX3d& S,
+                                        const TetOptions& options, int placement_iterations = 100);
+
+}  // namespace unfold

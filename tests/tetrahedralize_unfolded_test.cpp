@@ -1,0 +1,72 @@
+// The tet mesh of the unfolded surface put back into the input
+// (tetrahedralize.shape: unfolded): exact where the unfolded shape is a
+// similarity of the input, and no tet joins parts the surface does not join.
+#include "solvers/tetrahedralize_unfolded.h"
+
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "shapes/articulated_shape.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+// An unfolded shape that is the input turned, moved and inflated 2.5 times:
+// its tets put back into the input are those tets taken back by the same
+// similarity, interior included, none inverted.
+TEST(TetrahedralizeUnfolded, TakesASimilarityBackExactly) {
+  const SurfaceMesh input = make_articulated_shape(ShapePose::preset(1), 24);
+  const Eigen::Matrix3d R = test::random_rotation(5);
+  const Eigen::RowVector3d t(1, -2, 3);
+  const Eigen::MatrixX3d S = (2.5 * input.V * R.transpose()).rowwise() + t;
+  const UnfoldedTetMesh m = tetrahedralize_unfolded(input, S, TetOptions{});
+  const int ns = int(input.V.rows());
+  ASSERT_GT(m.rest.V.rows(), ns) << "the tet mesh has interior vertices";
+  EXPECT_EQ(m.rest.num_surface_vertices, ns);
+  EXPECT_EQ(m.rest.V.topRows(ns), input.V);
+  EXPECT_EQ(m.unfolded.topRows(ns), S);
+  const Eigen::MatrixX3d back = ((m.unfolded.rowwise() - t) * R) / 2.5;
+  EXPECT_LT((m.rest.V - back).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_EQ(m.report.shape, "unfolded");
+  EXPECT_EQ(m.report.inverted_rest_tets, 0);
+}
+
+// Two poses of the demo animal whose legs pass through each other: a tet mesh
+// of the input has tets joining the two legs; the unfolded shape's has none,
+// whatever the input. Here the "unfolded" shape is the rest pose, whose legs
+// are apart: no tet may have corners on both front legs' lower halves.
+TEST(TetrahedralizeUnfolded, JoinsNoPartsThatOnlyTouchInTheInput) {
+  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1), 32);
+  const SurfaceMesh apart = make_articulated_shape(ShapePose::rest(), 32);
+  // The lower front legs of the rest pose: below the knees, in front.
+  const auto lower_front = [&](int i, double side) {
+    return i < apart.V.rows() && apart.V(i, 2) < -0.9 && apart.V(i, 0) > 0.3 &&
+           apart.V(i, 1) * side > 0;
+  };
+  const auto joins_legs = [&](const Eigen::MatrixX4i& T) {
+    int count = 0;
+    for (int k = 0; k < T.rows(); ++k) {
+      bool left = false, right = false;
+      for (int c = 0; c < 4; ++c) {
+        left = left || lower_front(T(k, c), 1);
+        right = right || lower_front(T(k, c), -1);
+      }
+      count += left && right;
+    }
+    return count;
+  };
+  const TetMesh joined = tetrahedralize(crossed, TetOptions{});
+  EXPECT_GT(joins_legs(joined.T), 0) << "the crossed legs' own tet mesh joins them";
+  const UnfoldedTetMesh m = tetrahedralize_unfolded(crossed, apart.V, TetOptions{});
+  EXPECT_EQ(joins_legs(m.rest.T), 0);
+  EXPECT_TRUE(m.rest.V.allFinite());
+}
+
+TEST(TetrahedralizeUnfolded, RefusesAnUnfoldedShapeOfAnotherSize) {
+  const SurfaceMesh input = make_articulated_shape(ShapePose::rest(), 16);
+  EXPECT_THROW(tetrahedralize_unfolded(input, input.V.topRows(10), TetOptions{}), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
