@@ -20,14 +20,30 @@ double surface_area(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
   return area;
 }
 
+Eigen::MatrixX3d scaled_to_unit_area(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+  if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= V.rows()))
+    throw UsageError("pose_distance: a triangle names a vertex out of range");
+  const double area = surface_area(V, F);
+  if (!(area > 0)) throw UsageError("pose_distance: a surface has zero area");
+  return V / std::sqrt(area);
+}
+
 double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
                      const Eigen::MatrixX3i& F) {
   if (A.rows() != B.rows()) throw UsageError("pose_distance: the two poses differ in size");
-  if (F.size() > 0 && (F.minCoeff() < 0 || F.maxCoeff() >= A.rows()))
-    throw UsageError("pose_distance: a triangle names a vertex out of range");
-  const double area_a = surface_area(A, F), area_b = surface_area(B, F);
-  if (!(area_a > 0 && area_b > 0)) throw UsageError("pose_distance: a surface has zero area");
-  return aligned_distance(A / std::sqrt(area_a), B / std::sqrt(area_b));
+  return aligned_distance(scaled_to_unit_area(A, F), scaled_to_unit_area(B, F));
+}
+
+double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3i& F_A,
+                     const Eigen::VectorXi& rows_a, const Eigen::MatrixX3d& B,
+                     const Eigen::MatrixX3i& F_B, const Eigen::VectorXi& rows_b) {
+  if (rows_a.size() != rows_b.size() || rows_a.size() == 0)
+    throw UsageError("pose_distance: the two correspondence lists differ in size or are empty");
+  if (rows_a.minCoeff() < 0 || rows_a.maxCoeff() >= A.rows() || rows_b.minCoeff() < 0 ||
+      rows_b.maxCoeff() >= B.rows())
+    throw UsageError("pose_distance: a correspondence names a vertex out of range");
+  return aligned_distance(scaled_to_unit_area(A, F_A)(rows_a, Eigen::all),
+                          scaled_to_unit_area(B, F_B)(rows_b, Eigen::all));
 }
 
 Eigen::MatrixX3d transfer_by_nearest_point(const Eigen::MatrixX3d& rest,

@@ -23,6 +23,22 @@ double surface_area(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
 double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
                      const Eigen::MatrixX3i& F);
 
+/// The same pose distance for two shapes meshed differently, on given
+/// correspondences: A (triangles F_A) and B (triangles F_B) each scaled to its
+/// own unit surface area, then the mean |a_{rows_a[k]} - (R b_{rows_b[k]} + t)|
+/// over k after Procrustes on those rows. With F_A = F_B and rows_a = rows_b =
+/// 0..n-1 it is the vertex-order distance above.
+/// @param rows_a, rows_b zero-based vertex ids of A and B, row k the same point
+/// @throws UsageError if rows_a and rows_b differ in size or are empty, an id
+///         or a triangle names a vertex out of range, or a surface has zero area
+double pose_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3i& F_A,
+                     const Eigen::VectorXi& rows_a, const Eigen::MatrixX3d& B,
+                     const Eigen::MatrixX3i& F_B, const Eigen::VectorXi& rows_b);
+
+/// V divided by the square root of its surface area (triangles F): the form at unit area.
+/// @throws UsageError if a triangle names a vertex out of range or the area is zero
+Eigen::MatrixX3d scaled_to_unit_area(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
 /// Carries a deformation to other points: each target point takes the moved
 /// position of its nearest rest point (for canonical forms of a simplified
 /// mesh, on the input's vertices; the error is of the order of the simplified

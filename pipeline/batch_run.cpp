@@ -27,9 +27,8 @@
 #include "mesh/write_surface_mesh.h"
 #include "metrics/pose_invariance.h"
 #include "pipeline/metrics_json.h"
-#include "pipeline/pose_pictures.h"
+#include "pipeline/pose_invariance_tables.h"
 #include "pipeline/unfold_surface.h"
-#include "render/write_png.h"
 
 namespace unfold {
 namespace fs = std::filesystem;
@@ -450,9 +449,8 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
     }
   }
 
-  std::ostringstream retrieval, pose;
+  std::ostringstream retrieval;
   retrieval << "method,nn_accuracy\n";
-  pose << "class,method,pose_distance,mean_ratio,max_ratio,pairs\n";
   for (size_t m = 0; m < labels.size(); ++m) {
     std::vector<size_t> have;
     std::vector<Eigen::MatrixX3d> samples;
@@ -477,49 +475,17 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
       }
     });
   }
-  // Pose invariance per pair of poses of a class (shared vertex order), and the
-  // ratio to the raw poses' distance: what a user of canonical forms gains.
-  std::map<std::string, size_t> first_of_class;
-  for (size_t i = n; i-- > 0;)
-    if (readable[i]) first_of_class[classes[i]] = i;
-  std::ostringstream pose_pairs;
-  pose_pairs << "class,method,shape_a,shape_b,raw_distance,pose_distance,ratio\n";
-  for (const std::string& c : std::set<std::string>(classes.begin(), classes.end()))
-    for (size_t m = 0; m < labels.size(); ++m) {
-      double sum = 0, ratio_sum = 0, ratio_max = 0;
-      int pairs = 0;
-      for (size_t i = 0; i < n; ++i)
-        for (size_t j = i + 1; j < n; ++j)
-          if (classes[i] == c && classes[j] == c && on_input[m][i] && on_input[m][j] &&
-              inputs[i].V.rows() == inputs[j].V.rows()) {
-            const double raw = pose_distance(inputs[i].V, inputs[j].V, faces[i]);
-            const double d = pose_distance(*on_input[m][i], *on_input[m][j], faces[i]);
-            const double ratio = raw > 0 ? d / raw : 1.0;
-            pose_pairs << c << ',' << labels[m] << ',' << names[i] << ',' << names[j] << ',' << raw
-                       << ',' << d << ',' << ratio << '\n';
-            sum += d, ratio_sum += ratio, ratio_max = std::max(ratio_max, ratio);
-            ++pairs;
-          }
-      if (pairs > 0) {
-        pose << c << ',' << labels[m] << ',' << sum / pairs << ',' << ratio_sum / pairs << ','
-             << ratio_max << ',' << pairs << '\n';
-        std::vector<PosePanel> panels;
-        const Eigen::MatrixX3i& class_faces = faces[first_of_class.at(c)];
-        for (size_t i = 0; i < n; ++i)
-          if (classes[i] == c && on_input[m][i] &&
-              inputs[i].V.rows() == inputs[first_of_class.at(c)].V.rows())
-            panels.push_back(
-                {names[i], *on_input[m][i], std::sqrt(surface_area(*on_input[m][i], class_faces))});
-        write_png(output_dir + "/poses_" + c + "_" + labels[m] + ".png",
-                  render_poses(panels, class_faces, labels[m]));
-      }
+  // Pose invariance per pair of poses of a class, on the class's correspondence,
+  // and the ratio to the raw poses' distance: what a user of canonical forms gains.
+  std::vector<PoseShape> poses;
+  for (size_t i = 0; i < n; ++i)
+    if (readable[i]) {
+      poses.push_back({names[i], classes[i], meshes[i], faces[i], {}});
+      for (const auto& method_forms : on_input) poses.back().forms.push_back(method_forms[i]);
     }
+  write_pose_invariance_tables(output_dir, labels, poses);
   write_file_atomically(output_dir + "/retrieval.csv",
                         [&](std::ostream& s) { s << retrieval.str(); });
-  write_file_atomically(output_dir + "/pose_invariance.csv",
-                        [&](std::ostream& s) { s << pose.str(); });
-  write_file_atomically(output_dir + "/pose_pairs.csv",
-                        [&](std::ostream& s) { s << pose_pairs.str(); });
 }
 
 }  // namespace unfold

@@ -69,8 +69,8 @@ void write_results_csv(const std::string& path, const std::vector<BatchRow>& row
 std::vector<BatchRow> read_results_csv(const std::string& path);
 
 /// Retrieval (retrieval.csv: method,nn_accuracy; similarity_<method>.csv) and
-/// pose invariance (pose_invariance.csv: class,method,pose_distance) for the
-/// raw input poses and each method's canonical forms found in output_dir.
+/// pose invariance (pipeline/pose_invariance_tables.h) for the raw input poses
+/// and each method's canonical forms found in output_dir.
 /// @param meshes input mesh paths; methods the config stems
 /// Unreadable input meshes are left out. @throws OutputError
 void write_dataset_evaluation(const std::string& output_dir, const std::vector<std::string>& meshes,

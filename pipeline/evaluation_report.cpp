@@ -98,9 +98,13 @@ std::string pose_table(const std::vector<ReportRun>& runs, bool ratios) {
       if (ratios && f[1] == "raw") continue;
       if (std::find(methods.begin(), methods.end(), method) == methods.end())
         methods.push_back(method);
-      cells[f[0]][method] = ratios ? number(std::stod(f[3]), "%.3f") + " (max " +
-                                         number(std::stod(f[4]), "%.3f") + ")"
-                                   : number(std::stod(f[2]));
+      std::string& cell = cells[f[0]][method];
+      if (f[2].empty())  // the class has no correspondence (docs/evaluation.md)
+        cell = "no correspondence";
+      else if (ratios)
+        cell = number(std::stod(f[3]), "%.3f") + " (max " + number(std::stod(f[4]), "%.3f") + ")";
+      else
+        cell = number(std::stod(f[2]));
     }
   }
   if (cells.empty()) return "(none)\n";

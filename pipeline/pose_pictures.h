@@ -1,6 +1,7 @@
 // Pose invariance at a glance: the forms of every pose of one shape side by
-// side, each rigidly aligned to the first and scaled to unit surface area, with
-// the same cameras and scale, so that equal forms look equal.
+// side, each scaled to its own unit surface area and rigidly aligned to the
+// first on their corresponding points, with the same cameras and scale, so
+// that equal forms look equal, however each pose is meshed.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,17 +14,19 @@ namespace unfold {
 
 struct PosePanel {
   std::string title;   ///< the pose's name
-  Eigen::MatrixX3d V;  ///< its form (raw pose or canonical form), vertices in shared order
-  double scale = 1;    ///< sqrt(surface area of the form): forms are divided by it
+  Eigen::MatrixX3d V;  ///< its form (raw pose or canonical form)
+  Eigen::MatrixX3i F;  ///< its triangles
+  /// The vertices that correspond across panels (row k the same point in
+  /// every panel, e.g. read_vts); empty: all vertices, in shared order.
+  Eigen::VectorXi rows;
 };
 
-/// Side and top views of every panel's form after the best rigid alignment
-/// (metrics/rigid_alignment.h) to the first panel's; panels whose vertex count
-/// differs from the first's are left out.
-/// @param F     triangles shared by the forms
+/// Side and top views of every panel's form, scaled to unit surface area and
+/// moved by the best rigid alignment (metrics/rigid_alignment.h) of its
+/// corresponding points onto the first panel's.
 /// @param title goes before each panel's title in its caption (e.g. the method)
-/// @throws UsageError for no panels or a zero scale
-Image render_poses(const std::vector<PosePanel>& panels, const Eigen::MatrixX3i& F,
-                   const std::string& title);
+/// @throws UsageError for no panels, a surface of zero area, or panels whose
+///         corresponding points differ in number
+Image render_poses(const std::vector<PosePanel>& panels, const std::string& title);
 
 }  // namespace unfold

@@ -123,9 +123,10 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   std::string header, raw_row;
   std::getline(pairs_file, header);
   std::getline(pairs_file, raw_row);
-  EXPECT_EQ(header, "class,method,shape_a,shape_b,raw_distance,pose_distance,ratio");
+  EXPECT_EQ(header, "class,method,shape_a,shape_b,raw_distance,pose_distance,ratio,correspondence");
   EXPECT_EQ(raw_row.rfind("body,raw,body0,body1,", 0), 0u) << raw_row;
-  EXPECT_EQ(raw_row.substr(raw_row.size() - 2), ",1") << "raw poses have ratio 1: " << raw_row;
+  EXPECT_EQ(raw_row.substr(raw_row.size() - 15), ",1,vertex_order")
+      << "raw poses have ratio 1, shared vertex order: " << raw_row;
   for (const char* method : {"raw", "default", "lsmds"})
     EXPECT_TRUE(std::filesystem::exists(out + "/poses_body_" + method + ".png")) << method;
 }
@@ -145,8 +146,9 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
                      {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}});
   test::write_bytes(dir.file("retrieval.csv"), "method,nn_accuracy\nraw,0.5\ndefault,1\n");
   test::write_bytes(dir.file("pose_invariance.csv"),
-                    "class,method,pose_distance,mean_ratio,max_ratio,pairs\n"
-                    "cat,raw,0.2,1,1,1\ncat,default,0.1,0.5,0.75,1\n");
+                    "class,method,pose_distance,mean_ratio,max_ratio,pairs,correspondence\n"
+                    "cat,raw,0.2,1,1,1,vts\ncat,default,0.1,0.5,0.75,1,vts\n"
+                    "dog,raw,,,,0,none\ndog,default,,,,0,none\n");
   const std::string dir_path = dir.file("");
   const std::string md = evaluation_report_markdown({{dir_path, "2k"}});
   EXPECT_NE(md.find("| cat | 0.6000 (2/2) | 3.0000 (1/2) |"), std::string::npos) << md;
@@ -154,6 +156,9 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   EXPECT_NE(md.find("| default@2k | 1.0000 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| cat | 0.2000 | 0.1000 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| cat | 0.500 (max 0.750) |"), std::string::npos) << md;
+  // A class without correspondence (docs/evaluation.md): said, not a number.
+  EXPECT_NE(md.find("| dog | no correspondence | no correspondence |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| dog | no correspondence |\n"), std::string::npos) << md;
   write_cdf_plots({{dir_path, ""}}, dir_path);
   EXPECT_TRUE(std::filesystem::exists(dir.file("cdf_E_rig.png")));
 }

@@ -3,6 +3,7 @@
 #include "arrays.h"
 #include "functions.h"
 #include "mesh/read_surface_mesh.h"
+#include "mesh/read_vts.h"
 #include "mesh/write_surface_mesh.h"
 #include "shapes/articulated_shape.h"
 
@@ -21,6 +22,12 @@ void def_mesh_functions(py::module_& m) {
         write_surface_mesh(path, make_surface(V, F));
       },
       py::arg("path"), py::arg("V"), py::arg("F"), release());
+  m.def(
+      "read_vts",
+      [](const std::string& path, int vertex_count, int rows) {
+        return read_vts(path, vertex_count, rows);
+      },
+      py::arg("path"), py::arg("vertex_count"), py::arg("rows") = -1, release());
   m.def(
       "demo_shape",
       [](const std::string& pose, int resolution) {

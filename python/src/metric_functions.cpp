@@ -49,6 +49,15 @@ void def_metric_functions(py::module_& m) {
       },
       py::arg("A"), py::arg("B"), py::arg("F"), release());
   m.def(
+      "pose_distance_on_rows",
+      [](const Vertices& A, const Elements& F_A, const Eigen::VectorXi& rows_a, const Vertices& B,
+         const Elements& F_B, const Eigen::VectorXi& rows_b) {
+        return pose_distance(A, triangulate_faces(make_surface(A, F_A)), rows_a, B,
+                             triangulate_faces(make_surface(B, F_B)), rows_b);
+      },
+      py::arg("A"), py::arg("F_A"), py::arg("rows_a"), py::arg("B"), py::arg("F_B"),
+      py::arg("rows_b"), release());
+  m.def(
       "retrieval_distance",
       [](const Vertices& A, const Vertices& B, int sample_points, int icp_iterations) {
         const RetrievalOptions options{sample_points, icp_iterations};

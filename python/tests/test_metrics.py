@@ -61,3 +61,50 @@ def test_metric_arguments_are_checked(small_result):
         metrics.e_str(r.rest_tet_vertices, r.tet_vertices[:, :2])
     with pytest.raises(unfold.ConfigError):  # the library's size check
         metrics.e_str(r.rest_tet_vertices, r.tet_vertices[:10])
+
+
+def remeshed(V, F, seed):
+    """Another meshing of the surface (V, F): every other triangle split at its
+    centroid, the vertices shuffled. Returns (V2, F2, ids): ids[k] is the new
+    index of vertex k."""
+    centroids = V[F[::2]].mean(axis=1)
+    n, m = len(V), len(centroids)
+    points = np.vstack([V, centroids])
+    a, b, c = F[::2].T
+    mid = n + np.arange(m)
+    faces = np.vstack([F[1::2], np.c_[a, b, mid], np.c_[b, c, mid], np.c_[c, a, mid]])
+    order = np.random.default_rng(seed).permutation(len(points))  # new index of old vertex
+    V2 = np.empty_like(points)
+    V2[order] = points
+    return V2, order[faces], order[:n]
+
+
+def test_read_vts_and_pose_distance_on_correspondences(tmp_path):
+    V, F = unfold.demo_shape("0", resolution=20)
+    W = unfold.demo_shape("2", resolution=20)[0]
+    R, G, ids = remeshed(W, F, seed=4)
+    (tmp_path / "r.vts").write_text("# template\n" + "".join(f"{i + 1}\n" for i in ids))
+    read = unfold.read_vts(tmp_path / "r.vts", len(R), rows=len(V))
+    assert read.dtype == np.int32
+    np.testing.assert_array_equal(read, ids)
+    identity = np.arange(len(V))
+    d = metrics.pose_distance(V, W, F)
+    assert d > 0.01
+    # Shared connectivity and identity rows: the vertex-order distance.
+    assert metrics.pose_distance(V, W, F, rows_a=identity, rows_b=identity) == pytest.approx(
+        d, abs=1e-12)
+    # The same pose meshed otherwise, moved and scaled: zero; another pose: d.
+    moved = 0.2 * R @ rotation(0.4).T + 3.0
+    assert metrics.pose_distance(W, moved, F, F_B=G, rows_a=identity,
+                                 rows_b=read) == pytest.approx(0, abs=1e-9)
+    assert metrics.pose_distance(V, moved, F, F_B=G, rows_a=identity,
+                                 rows_b=read) == pytest.approx(d, abs=1e-7)
+    with pytest.raises(unfold.InputError, match="give both rows_a and rows_b"):
+        metrics.pose_distance(V, R, F, F_B=G, rows_a=identity)
+    with pytest.raises(unfold.InputError, match="rows_b refers to vertex"):
+        metrics.pose_distance(V, W, F, rows_a=identity, rows_b=identity + 1)
+    with pytest.raises(unfold.InputError,
+                       match=r"r.vts': line \d+: vertex id \d+ is outside 1\.\.10"):
+        unfold.read_vts(tmp_path / "r.vts", 10)
+    with pytest.raises(unfold.InputError, match="expected 3"):
+        unfold.read_vts(tmp_path / "r.vts", len(R), rows=3)

@@ -28,7 +28,7 @@ from . import _arrays, _config, _core, metrics
 from ._core import ConfigError, Error, InputError, NumericalError, OutputError
 
 __all__ = ["Error", "ConfigError", "InputError", "NumericalError", "OutputError", "Result",
-           "read_mesh", "write_mesh", "demo_shape", "unfold", "compare", "config_keys",
+           "read_mesh", "write_mesh", "read_vts", "demo_shape", "unfold", "compare", "config_keys",
            "metrics"]
 
 logging.getLogger("unfold").addHandler(logging.NullHandler())
@@ -90,6 +90,18 @@ def write_mesh(path: PathLike, V: npt.ArrayLike, F: npt.ArrayLike) -> None:
     bad arrays, OutputError naming the file when it cannot be written.
     """
     _core.write_mesh(os.fspath(path), *_arrays.surface(V, F))
+
+
+def read_vts(path: PathLike, vertex_count: int, rows: int | None = None) -> np.ndarray:
+    """Reads a .vts correspondence file (as in FAUST/SHREC remeshings): one
+    one-based vertex id per line, row k the same point in every pose's file.
+
+    Returns the ids as a zero-based int32 (k,) array, for
+    metrics.pose_distance(rows_a=..., rows_b=...). vertex_count: the mesh's
+    number of vertices (ids above it are refused); rows: the number of ids
+    the file must hold (None: any). Raises InputError naming the file and line.
+    """
+    return _core.read_vts(os.fspath(path), vertex_count, -1 if rows is None else rows)
 
 
 def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarray, np.ndarray]:

@@ -41,6 +41,18 @@ def elements(array: npt.ArrayLike, num_vertices: int, corners: int | None = 3,
     return np.ascontiguousarray(a, dtype=np.int32)
 
 
+def indices(array: npt.ArrayLike, num_vertices: int, name: str) -> np.ndarray:
+    """``array`` as a C-contiguous int32 (k,) array of vertex indices below num_vertices."""
+    a = np.asarray(array)
+    if a.ndim != 1 or not np.issubdtype(a.dtype, np.integer):
+        raise InputError(f"{name} must be a 1-D integer array of vertex indices, "
+                         f"got shape {a.shape} and dtype {a.dtype}")
+    if a.size and (a.min() < 0 or a.max() >= num_vertices):
+        bad = a.min() if a.min() < 0 else a.max()
+        raise InputError(f"{name} refers to vertex {bad}, but there are {num_vertices} vertices")
+    return np.ascontiguousarray(a, dtype=np.int32)
+
+
 def surface(V: npt.ArrayLike, F: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """Vertices and triangles: vertices(V) and elements(F, len(V))."""
     V = vertices(V)

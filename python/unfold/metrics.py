@@ -12,6 +12,7 @@ from typing import Any
 import numpy.typing as npt
 
 from . import _arrays, _core
+from ._core import InputError
 
 
 def _set(**options: Any) -> dict[str, Any]:
@@ -60,12 +61,28 @@ def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
     return _core.surface_area(*_arrays.surface(V, F))
 
 
-def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, F: npt.ArrayLike) -> float:
-    """Mean vertex distance of A and B (one surface in two poses: corresponding
-    rows, triangles F), each scaled to unit surface area, after the best rigid
-    alignment: zero for forms that differ by a rigid motion and a scale."""
+def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, F: npt.ArrayLike,
+                  F_B: npt.ArrayLike | None = None, rows_a: npt.ArrayLike | None = None,
+                  rows_b: npt.ArrayLike | None = None) -> float:
+    """Mean distance of corresponding points of A and B, each scaled to its own
+    unit surface area, after the best rigid alignment: zero for forms that
+    differ by a rigid motion and a scale.
+
+    Without rows: A and B are one surface in two poses (corresponding rows,
+    triangles F). For two meshings of a shape (e.g. independently remeshed
+    scans), F is A's triangles, F_B B's, and rows_a[k], rows_b[k] are the
+    zero-based vertices of A and B that are the same point (unfold.read_vts).
+    """
     A, F = _arrays.surface(A, F)
-    return _core.pose_distance(A, _arrays.vertices(B, "B"), F)
+    B = _arrays.vertices(B, "B")
+    if rows_a is None and rows_b is None and F_B is None:
+        return _core.pose_distance(A, B, F)
+    if rows_a is None or rows_b is None:
+        raise InputError("pose_distance: give both rows_a and rows_b, or neither")
+    F_B = F if F_B is None else F_B
+    return _core.pose_distance_on_rows(A, F, _arrays.indices(rows_a, len(A), "rows_a"), B,
+                                       _arrays.elements(F_B, len(B), 3, "F_B"),
+                                       _arrays.indices(rows_b, len(B), "rows_b"))
 
 
 def retrieval_distance(A: npt.ArrayLike, B: npt.ArrayLike, sample_points: int | None = None,
