@@ -10,6 +10,9 @@ DEFINE_string(input_dir, "", "directory of input meshes (required)");
 DEFINE_string(output_dir, "", "output directory, created if missing (required)");
 DEFINE_string(configs, "", "comma-separated YAML configs; method name = file stem (required)");
 DEFINE_int32(jobs, 1, "shapes run at once, each in its own process");
+DEFINE_int32(threads, 0,
+             "if >= 1: threads per shape (overrides threads of every config); 0: the configs' "
+             "threads, and where those are 0 the cores divided by --jobs");
 DEFINE_string(shard, "0/1",
               "i/N: run only the shapes k (sorted by name) with k % N == i, e.g. one Slurm "
               "array task; then collect with one run without --shard and --skip_existing");
@@ -38,6 +41,8 @@ int main(int argc, char** argv) {
     options.jobs = FLAGS_jobs;
     std::tie(options.shard_index, options.shard_count) = unfold::parse_shard(FLAGS_shard);
     options.skip_existing = FLAGS_skip_existing;
+    if (FLAGS_threads < 0) throw unfold::UsageError("--threads must be >= 0");
+    if (FLAGS_threads > 0) options.overrides["threads"] = std::to_string(FLAGS_threads);
     if (FLAGS_target_vertices >= 0)
       options.overrides["simplify.target_vertices"] = std::to_string(FLAGS_target_vertices);
     if (!FLAGS_metrics.empty()) options.overrides["metrics.compute"] = FLAGS_metrics;

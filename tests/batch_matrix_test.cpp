@@ -1,7 +1,9 @@
 // unfold_batch on every input class with every method: failing shapes are
 // recorded with their error and the run goes on; every ok shape's files parse;
 // a batch interrupted (Ctrl-C) and resumed with --skip_existing writes the
-// same tables as one run straight through.
+// same tables as one run straight through; --threads is checked, and a shape
+// below kMinParallelRows gives the same files on one thread as on two (what
+// scripts/slurm/submit's one thread a shape relies on, docs/reliability.md).
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -138,6 +140,24 @@ TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(fs::last_write_time(out + "/default/clean.off"), finished_before) << "not kept";
   EXPECT_EQ(tables(out), tables(dir.file("straight")));
+}
+
+TEST(BatchMatrix, ThreadsIsCheckedAndASmallShapeDoesNotDependOnIt) {
+  const test::TempDir dir;
+  const std::string in = dir.file("in");
+  fs::create_directories(in);
+  fs::copy_file(test::matrix_input(test::kDemo), in + "/demo.ply");
+  const std::string args = "--input_dir " + in + " --configs " + configs({0}) + " --output_dir ";
+  const test::AppRun bad = test::run_app("unfold_batch", args + dir.file("bad") + " --threads -1");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--threads must be >= 0"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(dir.file("bad")));
+  for (const char* threads : {"1", "2"})
+    ASSERT_EQ(
+        test::run_app("unfold_batch", args + dir.file(threads) + " --threads " + threads).exit_code,
+        0);
+  EXPECT_EQ(test::file_text(dir.file("1") + "/default/demo.off"),
+            test::file_text(dir.file("2") + "/default/demo.off"));
 }
 
 }  // namespace
