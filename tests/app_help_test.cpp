@@ -142,6 +142,20 @@ TEST(AppHelp, ProgressLinesNameTheToolUnlessVerbose) {
   EXPECT_GT(glog_lines, progress) << verbose.err;  // the per-iteration lines too
 }
 
+TEST(AppHelp, Wolf0PrintsNoGlogPrefix) {
+  const std::string wolf = test::shared_data("tosca/wolf0.off");
+  if (wolf.empty()) GTEST_SKIP() << "../shared/data/tosca/wolf0.off is absent";
+  test::TempDir dir;
+  const AppRun r = run_app(
+      "unfold", "--input " + wolf + " --output " + dir.file("wolf.off") + " --metrics none");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string& line : lines(r.err)) {
+    EXPECT_FALSE(std::regex_search(line, kGlogPrefix)) << line;
+    EXPECT_EQ(line.rfind("unfold: ", 0), 0u) << line;
+  }
+  EXPECT_NE(r.err.find("\nunfold: cascade 1/"), std::string::npos) << r.err;
+}
+
 TEST(AppHelp, WarningsAndErrorsAreOneLineNamingTheTool) {
   test::TempDir dir;
   const std::string input = dir.file("sphere.off");
