@@ -26,7 +26,9 @@ std::string read_all(const std::string& path) {
 // Whitespace-separated tokens of a text, read one at a time.
 class Words {
  public:
-  Words(std::string_view text, const std::string& path) : text_(text), path_(path) {}
+  /// hash_comments: '#' to the end of the line is a comment (TetGen, MEDIT; not Gmsh).
+  Words(std::string_view text, const std::string& path, bool hash_comments = true)
+      : text_(text), path_(path), hash_comments_(hash_comments) {}
 
   bool at_end() {
     skip_space();
@@ -57,7 +59,7 @@ class Words {
  private:
   void skip_space() {
     while (at_ < text_.size()) {
-      if (text_[at_] == '#' && skip_comments_) {
+      if (text_[at_] == '#' && hash_comments_) {
         while (at_ < text_.size() && text_[at_] != '\n') ++at_;
       } else if (std::isspace(static_cast<unsigned char>(text_[at_]))) {
         ++at_;
@@ -68,10 +70,8 @@ class Words {
   }
   std::string_view text_;
   const std::string& path_;
+  bool hash_comments_;
   size_t at_ = 0;
-
- public:
-  bool skip_comments_ = true;  ///< '#' to the end of the line is a comment (TetGen, MEDIT)
 };
 
 // Points and tets from a list of positions and 4-tuples of indices into it
@@ -197,8 +197,7 @@ TetMeshData read_tetgen(const std::string& path) {
 
 TetMeshData read_msh(const std::string& path) {
   const std::string text = read_all(path);
-  Words words(text, path);
-  words.skip_comments_ = false;
+  Words words(text, path, false);
   if (words.next() != "$MeshFormat") words.fail("not a Gmsh file (no $MeshFormat)");
   const double version = words.number<double>();
   if (words.number<int>() != 0) words.fail("binary .msh is not supported (save it as ASCII)");
