@@ -14,11 +14,14 @@
 #include "core/atomic_file.h"
 #include "core/output_transaction.h"
 #include "mesh/read_surface_mesh.h"
+#include "mesh/read_tet_mesh.h"
+#include "mesh/tet_mesh_boundary.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
 #include "pipeline/beta_sweep.h"
 #include "pipeline/convergence_csv.h"
 #include "pipeline/metrics_json.h"
+#include "pipeline/prepare_mesh_from_tets.h"
 #include "pipeline/result_pictures.h"
 #include "pipeline/tet_fields.h"
 #include "pipeline/unfold_surface.h"
@@ -34,7 +37,14 @@ DEFINE_string(demo_pose, "0",
 DEFINE_string(output, "",
               "canonical surface (.off .obj .ply .stl): the input's vertices and faces");
 DEFINE_string(input_copy, "", "also write the surface that was unfolded (e.g. the demo shape)");
+DEFINE_string(tet_input, "",
+              "a tet mesh to unfold instead of tetrahedralizing (.vtu as --tet_output writes it, "
+              "TetGen .node/.ele, Gmsh .msh, MEDIT .mesh; ASCII); its boundary is the surface, "
+              "or must be --input's");
 DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (TetGen .node/.ele)");
+DEFINE_string(rest_tet_output, "",
+              "the tet mesh the run unfolded, at rest (.vtu or .node): to keep, inspect, or give "
+              "back with --tet_input");
 DEFINE_string(metrics_json, "", "metrics, timings and the per-iteration history as JSON");
 DEFINE_string(render, "",
               "before/after picture (.png): side and top views of the input and the canonical "
@@ -51,8 +61,8 @@ DEFINE_string(convergence_png, "",
               "plot (.png) of the energy and edge ratio per iteration, cascade boundaries marked");
 DEFINE_string(config, "", "YAML config; empty: the built-in defaults (= configs/default.yaml)");
 
-#define UNFOLD_DEFINE_KEY_FLAG(flag, path, member, help) \
-  DEFINE_string(flag, "", help " [config key " path "]");
+// The key and its default are shown by --help (apps/app_help.h).
+#define UNFOLD_DEFINE_KEY_FLAG(flag, path, member, help) DEFINE_string(flag, "", help);
 UNFOLD_CONFIG_KEYS(UNFOLD_DEFINE_KEY_FLAG)
 #undef UNFOLD_DEFINE_KEY_FLAG
 
@@ -74,11 +84,12 @@ int run() {
   for (const std::string& path : {FLAGS_output, FLAGS_input_copy})
     if (!path.empty()) unfold::check_surface_mesh_format(path);
   unfold::check_tet_mesh_format(FLAGS_tet_output);
+  unfold::check_tet_mesh_format(FLAGS_rest_tet_output);
   unfold::check_png_format(FLAGS_render);
   unfold::check_png_format(FLAGS_convergence_png);
   for (const std::string& path :
-       {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_metrics_json, FLAGS_render,
-        FLAGS_convergence, FLAGS_convergence_png})
+       {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_rest_tet_output, FLAGS_metrics_json,
+        FLAGS_render, FLAGS_convergence, FLAGS_convergence_png})
     if (!path.empty()) unfold::check_writable_destination(path);
   unfold::RenderOptions render;
   render.up_axis = unfold::axis_index(FLAGS_render_up, "--render_up");
@@ -94,14 +105,25 @@ int run() {
       throw unfold::UsageError("--beta_sweep needs --render (the picture it makes)");
   }
 
+  if (!FLAGS_tet_input.empty()) unfold::check_tet_input_format(FLAGS_tet_input);
   unfold::SurfaceMesh surface;
-  if (FLAGS_input.empty()) {
+  unfold::TetMeshData given_tets;
+  if (!FLAGS_tet_input.empty()) {
+    given_tets = unfold::read_tet_mesh(FLAGS_tet_input);
+    surface = FLAGS_input.empty() ? unfold::tet_mesh_boundary(given_tets.V, given_tets.T)
+                                  : unfold::read_surface_mesh(FLAGS_input);
+  } else if (FLAGS_input.empty()) {
     LOG(INFO) << "no --input: unfolding the built-in demo shape, pose " << FLAGS_demo_pose;
     surface = unfold::make_articulated_shape(unfold::ShapePose::named(FLAGS_demo_pose));
   } else {
     surface = unfold::read_surface_mesh(FLAGS_input);
   }
-  const unfold::UnfoldResult result = unfold::unfold_surface(surface, options);
+  const unfold::UnfoldResult result =
+      FLAGS_tet_input.empty()
+          ? unfold::unfold_surface(surface, options)
+          : unfold::unfold_prepared(
+                unfold::prepare_mesh_from_tets(surface, given_tets.V, given_tets.T, options),
+                options);
 
   unfold::OutputTransaction outputs;  // all files or none (docs/errors.md)
   if (!FLAGS_output.empty()) unfold::write_surface_mesh(FLAGS_output, result.canonical);
@@ -109,6 +131,8 @@ int run() {
   if (!FLAGS_tet_output.empty())
     unfold::write_tet_mesh(FLAGS_tet_output, result.tet_canonical, result.tets.T,
                            unfold::canonical_tet_fields(result));
+  if (!FLAGS_rest_tet_output.empty())
+    unfold::write_tet_mesh(FLAGS_rest_tet_output, result.tets.V, result.tets.T);
   if (!FLAGS_metrics_json.empty()) unfold::write_metrics_json(FLAGS_metrics_json, result, options);
   if (!FLAGS_convergence.empty())
     unfold::write_convergence_csv(FLAGS_convergence, result.cascade.history);
@@ -149,11 +173,24 @@ int run() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "unfold a non-rigid shape into its canonical pose\n"
-      "  unfold --input shape.off --output canonical.off [--metrics_json m.json] [--config "
-      "c.yaml]\n"
-      "  without --input it unfolds the built-in demo shape; every config key is also a flag");
   gflags::SetVersionString("0.1.0");
-  return unfold::app::run_main("unfold", argc, argv, run);
+  unfold::app::AppHelp help;
+  help.usage = "unfold [--input shape.off] --output canonical.off [--config c.yaml] [flags]";
+  help.summary =
+      "Unfolds a non-rigid shape into its canonical pose. Without --input it unfolds the built-in "
+      "demo shape. Every config key is also a flag, overriding --config.";
+  help.groups = {
+      {"Input and output",
+       {"input", "demo_pose", "tet_input", "output", "input_copy", "tet_output", "rest_tet_output",
+        "metrics_json", "convergence"}},
+      {"Method and config", {"config"}},
+      {"Cascade", {}},
+      {"Tetrahedralization", {}},
+      {"Linear solver (method local_global)", {}},
+      {"Energy terms", {}},
+      {"Metrics and pictures",
+       {"render", "render_color", "render_up", "beta_sweep", "convergence_png"}},
+  };
+  help.config_key_flags = true;
+  return unfold::app::run_main("unfold", help, argc, argv, run);
 }

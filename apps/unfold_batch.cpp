@@ -25,11 +25,19 @@ DEFINE_int32(retrieval_points, 1000, "points sampled per shape for retrieval");
 DEFINE_bool(progress, true, "progress bar on stderr (only when it is a terminal)");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "unfold a dataset with several configs\n"
-      "  unfold_batch --input_dir D --output_dir O --configs a.yaml,b.yaml [--jobs N] "
-      "[--shard i/N]");
-  return unfold::app::run_main("unfold_batch", argc, argv, [] {
+  unfold::app::AppHelp help;
+  help.usage =
+      "unfold_batch --input_dir D --output_dir O --configs a.yaml,b.yaml [--jobs N] [--shard i/N]";
+  help.summary =
+      "Unfolds every mesh of a directory with every config; writes results.csv, retrieval and "
+      "pose-invariance tables (docs/evaluation.md).";
+  help.groups = {
+      {"Input and output", {"input_dir", "output_dir", "skip_existing"}},
+      {"Method and config", {"configs", "target_vertices"}},
+      {"Metrics and pictures", {"metrics", "retrieval_points"}},
+      {"Batch", {"jobs", "shard", "progress"}},
+  };
+  return unfold::app::run_main("unfold_batch", help, argc, argv, [] {
     if (FLAGS_input_dir.empty() || FLAGS_output_dir.empty())
       throw unfold::UsageError("--input_dir and --output_dir are required");
     unfold::BatchOptions options;

@@ -17,10 +17,15 @@ DEFINE_double(fixed_beta, 0,
 DEFINE_string(csv, "", "also write the table as CSV");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "compare configs on one mesh\n"
-      "  unfold_compare --input X --configs a.yaml,b.yaml [--fixed_beta B] [--csv FILE]");
-  return unfold::app::run_main("unfold_compare", argc, argv, [] {
+  unfold::app::AppHelp help;
+  help.usage = "unfold_compare [--input X] --configs a.yaml,b.yaml [--fixed_beta B] [--csv FILE]";
+  help.summary =
+      "Compares configs (solvers, energy terms) on one mesh and one tet mesh; prints a table.";
+  help.groups = {
+      {"Input and output", {"input", "demo_pose", "csv"}},
+      {"Method and config", {"configs", "fixed_beta"}},
+  };
+  return unfold::app::run_main("unfold_compare", help, argc, argv, [] {
     std::vector<std::string> configs;
     std::istringstream list(FLAGS_configs);
     for (std::string item; std::getline(list, item, ',');)

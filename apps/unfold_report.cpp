@@ -23,10 +23,16 @@ std::vector<std::string> split(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "report on unfold_batch runs\n"
-      "  unfold_report --runs O1,O2 [--labels a,b] [--markdown report.md] [--plots_dir DIR]");
-  return unfold::app::run_main("unfold_report", argc, argv, [] {
+  unfold::app::AppHelp help;
+  help.usage = "unfold_report --runs O1,O2 [--labels a,b] [--markdown report.md] [--plots_dir DIR]";
+  help.summary =
+      "Markdown tables (per-class means, retrieval, pose invariance) and CDF plots from "
+      "unfold_batch runs.";
+  help.groups = {
+      {"Input and output", {"runs", "labels", "markdown"}},
+      {"Metrics and pictures", {"plots_dir"}},
+  };
+  return unfold::app::run_main("unfold_report", help, argc, argv, [] {
     const std::vector<std::string> dirs = split(FLAGS_runs), labels = split(FLAGS_labels);
     if (dirs.empty()) throw unfold::UsageError("--runs is required");
     if (!labels.empty() && labels.size() != dirs.size())

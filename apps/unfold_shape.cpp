@@ -12,9 +12,12 @@ DEFINE_int32(resolution, unfold::kDefaultShapeResolution,
 DEFINE_string(output, "", "output mesh (.off .obj .ply .stl), required");
 
 int main(int argc, char** argv) {
-  gflags::SetUsageMessage(
-      "unfold_shape --pose rest|0|1|2|contact0|contact1 --resolution N --output shape.off");
-  return unfold::app::run_main("unfold_shape", argc, argv, [] {
+  unfold::app::AppHelp help;
+  help.usage =
+      "unfold_shape --output shape.off [--pose rest|0|1|2|contact0|contact1] [--resolution N]";
+  help.summary = "Writes the built-in demo shape, a four-legged animal, in a chosen pose.";
+  help.groups = {{"Input and output", {"output"}}, {"Shape", {"pose", "resolution"}}};
+  return unfold::app::run_main("unfold_shape", help, argc, argv, [] {
     if (FLAGS_output.empty()) throw unfold::UsageError("--output is required");
     unfold::check_surface_mesh_format(FLAGS_output);
     const unfold::ShapePose pose = unfold::ShapePose::named(FLAGS_pose);

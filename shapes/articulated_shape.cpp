@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <memory>
@@ -116,27 +119,55 @@ struct RestShape {
   Eigen::MatrixXd alpha;
 };
 
-RestShape build_rest_shape(int resolution) {
-  const std::vector<Capsule> parts = capsules();
-  const ImplicitFunction field = [&parts](const Vector3d& x) {
-    double d = std::numeric_limits<double>::infinity();
-    for (const Capsule& c : parts) d = smooth_min(d, capsule_distance(c, x), 0.06);
-    return d;
-  };
+void check_resolution(int resolution) {
+  if (resolution < 16 || resolution > 128)
+    throw UsageError("make_articulated_shape: resolution " + std::to_string(resolution) +
+                     " is not in [16, 128]");
+}
+
+// The field's box and the target edge length of a resolution.
+struct RestGrid {
   Eigen::AlignedBox3d box;
+  double edge;
+};
+
+RestGrid rest_grid(const std::vector<Capsule>& parts, int resolution) {
+  RestGrid grid;
   for (const Capsule& c : parts) {
     const Vector3d r = Vector3d::Constant(std::max(c.ra, c.rb));
-    box.extend(Vector3d(c.a - r)).extend(Vector3d(c.a + r));
-    box.extend(Vector3d(c.b - r)).extend(Vector3d(c.b + r));
+    grid.box.extend(Vector3d(c.a - r)).extend(Vector3d(c.a + r));
+    grid.box.extend(Vector3d(c.b - r)).extend(Vector3d(c.b + r));
   }
-  const double edge = box.sizes().x() / resolution;
-  // The thinnest part (tail tip, radius 0.07) needs a few grid cells across.
-  const double spacing = std::min(edge / 2.5, 0.028);
-  box.min().array() -= 2 * edge;
-  box.max().array() += 2 * edge;
+  grid.edge = grid.box.sizes().x() / resolution;
+  grid.box.min().array() -= 2 * grid.edge;
+  grid.box.max().array() += 2 * grid.edge;
+  return grid;
+}
 
+// The copy of mesh_articulated_rest_surface(kDefaultShapeResolution) stored
+// in articulated_rest_surface_64.inc.
+SurfaceMesh stored_rest_surface() {
+  static_assert(kDefaultShapeResolution == 64, "the stored rest surface is that of resolution 64");
+#include "shapes/articulated_rest_surface_64.inc"
+  SurfaceMesh mesh;
+  const size_t n = std::size(kRestVertexBits) / 3;
+  mesh.V.resize(Eigen::Index(n), 3);
+  for (size_t k = 0; k < 3 * n; ++k) {
+    double x;
+    std::memcpy(&x, &kRestVertexBits[k], sizeof x);
+    mesh.V(Eigen::Index(k / 3), Eigen::Index(k % 3)) = x;
+  }
+  for (size_t k = 0; k < std::size(kRestTriangles); k += 3)
+    mesh.faces.push_back({kRestTriangles[k], kRestTriangles[k + 1], kRestTriangles[k + 2]});
+  return mesh;
+}
+
+RestShape build_rest_shape(int resolution) {
+  const std::vector<Capsule> parts = capsules();
+  const double edge = rest_grid(parts, resolution).edge;
   RestShape rest;
-  rest.mesh = mesh_implicit_surface(field, box, edge, spacing);
+  rest.mesh = resolution == kDefaultShapeResolution ? stored_rest_surface()
+                                                    : mesh_articulated_rest_surface(resolution);
   const int n = int(rest.mesh.V.rows());
 
   // Skinning weights: each vertex starts fully on the bone of its nearest
@@ -197,6 +228,20 @@ std::array<Eigen::AngleAxisd, kNumBones> joint_rotations(const ShapePose& p) {
 }
 
 }  // namespace
+
+SurfaceMesh mesh_articulated_rest_surface(int resolution) {
+  check_resolution(resolution);
+  const std::vector<Capsule> parts = capsules();
+  const ImplicitFunction field = [&parts](const Vector3d& x) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const Capsule& c : parts) d = smooth_min(d, capsule_distance(c, x), 0.06);
+    return d;
+  };
+  const RestGrid grid = rest_grid(parts, resolution);
+  // The thinnest part (tail tip, radius 0.07) needs a few grid cells across.
+  const double spacing = std::min(grid.edge / 2.5, 0.028);
+  return mesh_implicit_surface(field, grid.box, grid.edge, spacing);
+}
 
 ShapePose ShapePose::rest() { return ShapePose(); }
 
@@ -271,9 +316,7 @@ ShapePose ShapePose::preset(int k) {
 }
 
 SurfaceMesh make_articulated_shape(const ShapePose& pose, int resolution) {
-  if (resolution < 16 || resolution > 128)
-    throw UsageError("make_articulated_shape: resolution " + std::to_string(resolution) +
-                     " is not in [16, 128]");
+  check_resolution(resolution);
   // Meshing the rest shape dominates the cost; poses of one resolution share it.
   static std::mutex mutex;
   static std::map<int, std::shared_ptr<const RestShape>> cache;

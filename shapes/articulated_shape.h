@@ -56,9 +56,17 @@ struct ShapePose {
 /// Default `resolution` of make_articulated_shape: about 4000 vertices.
 constexpr int kDefaultShapeResolution = 64;
 
+/// The rest shape's surface, meshed from its implicit field (a smooth union
+/// of tapered capsules): seconds of work, so make_articulated_shape uses a
+/// stored copy at kDefaultShapeResolution (articulated_rest_surface_64.inc,
+/// checked against this by tests/shape_test.cpp, which also regenerates it).
+/// @throws UsageError for a resolution out of [16, 128]
+SurfaceMesh mesh_articulated_rest_surface(int resolution);
+
 /// The animal in `pose`: a closed, 2-manifold, single-component, outward
 /// oriented triangle mesh. The rest shape is a smooth union of tapered capsules
-/// meshed once per resolution (and cached: later poses are cheap); poses are obtained by skinning
+/// meshed once per resolution (mesh_articulated_rest_surface; stored at the
+/// default resolution, cached for others: later poses are cheap); poses are obtained by skinning
 /// (each vertex is rotated about the joints of its skeleton chain by a fraction of each joint
 /// angle, fractions blended smoothly across joints), so connectivity and vertex
 /// order never depend on the pose. Self-intersection free for the rest pose and

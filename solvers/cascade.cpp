@@ -2,6 +2,8 @@
 
 #include <glog/logging.h>
 
+#include <iomanip>
+
 #include "metrics/edge_ratio.h"
 #include "solvers/unfold_problem.h"
 
@@ -29,9 +31,9 @@ CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
     }
     result.cascades = cascade;
     if (result.history.size() > before)
-      LOG(INFO) << "cascade " << cascade << ": beta " << beta << ", "
-                << result.history.size() - before << " iterations, energy "
-                << result.history.back().energy << ", edge ratio "
+      LOG(INFO) << std::setprecision(3) << "cascade " << cascade << "/" << options.num_cascades
+                << ": beta " << beta << ", " << result.history.size() - before
+                << " iterations, energy " << result.history.back().energy << ", edge ratio "
                 << result.history.back().edge_ratio << (result.reached_band ? " in band" : "");
     if (result.reached_band) break;
   }

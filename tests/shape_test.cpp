@@ -5,10 +5,14 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -192,6 +196,51 @@ TEST(ShapeApp, BadFlagsExitWithTwo) {
   EXPECT_EQ(run_app("--pose rest"), 2);
   EXPECT_EQ(run_app("--resolution abc" + out), 2);
   EXPECT_EQ(run_app("--no_such_flag" + out), 2);
+}
+
+// articulated_rest_surface_64.inc's text for `mesh`: each coordinate's bits, so
+// the stored copy is bit for bit the meshed one.
+std::string rest_surface_source(const SurfaceMesh& mesh) {
+  std::ostringstream out;
+  out << "// The demo shape's rest surface at resolution 64: mesh_articulated_rest_surface(64),\n"
+         "// stored because meshing takes seconds. Written by tests/shape_test.cpp\n"
+         "// (ShapeMake.StoredRestSurfaceIsTheMeshedOne) when it differs: do not edit.\n"
+         "// clang-format off\n"
+         "static constexpr uint64_t kRestVertexBits[] = {  // x, y, z of each vertex\n";
+  out << std::hex << std::setfill('0');
+  for (Eigen::Index i = 0; i < mesh.V.rows(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      uint64_t bits;
+      const double x = mesh.V(i, a);
+      std::memcpy(&bits, &x, sizeof bits);
+      out << "0x" << std::setw(16) << bits << ",";
+    }
+    out << "\n";
+  }
+  out << std::dec << "};\nstatic constexpr int kRestTriangles[] = {\n";
+  for (const auto& face : mesh.faces) {
+    for (const int v : face) out << v << ",";
+    out << "\n";
+  }
+  out << "};\n// clang-format on\n";
+  return out.str();
+}
+
+TEST(ShapeMake, StoredRestSurfaceIsTheMeshedOne) {
+  const SurfaceMesh meshed = mesh_articulated_rest_surface(kDefaultShapeResolution);
+  const std::string stored_path = UNFOLD_SOURCE_DIR "/shapes/articulated_rest_surface_64.inc";
+  const std::string fresh_path = ::testing::TempDir() + "articulated_rest_surface_64.inc";
+  const std::string fresh = rest_surface_source(meshed);
+  const bool same = read_file(stored_path) == fresh;
+  if (!same) std::ofstream(fresh_path) << fresh;
+  EXPECT_TRUE(same) << "the stored rest surface is not what the code meshes; if the change is "
+                       "meant: cp "
+                    << fresh_path << " " << stored_path;
+  // And the shape made from it is the meshed surface, skinned.
+  const SurfaceMesh rest = make_articulated_shape(ShapePose::rest());
+  EXPECT_EQ(rest.faces, meshed.faces);
+  ASSERT_EQ(rest.V.rows(), meshed.V.rows());
+  EXPECT_LT((rest.V - meshed.V).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(ShapeMake, RejectsBadParameters) {

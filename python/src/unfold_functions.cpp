@@ -14,6 +14,7 @@
 #include "json_to_python.h"
 #include "pipeline/compare_configs.h"
 #include "pipeline/metrics_json.h"
+#include "pipeline/prepare_mesh_from_tets.h"
 #include "pipeline/tet_fields.h"
 #include "pipeline/unfold_surface.h"
 
@@ -63,7 +64,8 @@ void def_unfold_functions(py::module_& m) {
   m.def(
       "unfold",
       [](const Vertices& V, const Elements& F, const std::string& config_path,
-         const Overrides& overrides) {
+         const Overrides& overrides, const std::optional<Elements>& tets,
+         const std::optional<Vertices>& tet_vertices) {
         const Options options = load_options(config_path, overrides);
         const SurfaceMesh surface = make_surface(V, F);
         UnfoldResult result;
@@ -71,12 +73,17 @@ void def_unfold_functions(py::module_& m) {
         {
           py::gil_scoped_release nogil;
           use_threads(options);
-          result = unfold_surface(surface, options);
+          // A given tet mesh (tets over tet_vertices) whose boundary is the surface.
+          result = tets ? unfold_prepared(prepare_mesh_from_tets(surface, *tet_vertices,
+                                                                 Eigen::MatrixX4i(*tets), options),
+                                          options)
+                        : unfold_surface(surface, options);
           fields = canonical_tet_fields(result);
         }
         return result_dict(result, fields, options);
       },
-      py::arg("V"), py::arg("F"), py::arg("config_path"), py::arg("overrides"));
+      py::arg("V"), py::arg("F"), py::arg("config_path"), py::arg("overrides"),
+      py::arg("tets") = std::nullopt, py::arg("tet_vertices") = std::nullopt);
   m.def(
       "compare",
       [](const Vertices& V, const Elements& F,

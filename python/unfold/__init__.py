@@ -113,7 +113,8 @@ def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarr
     return _core.demo_shape(pose, **({} if resolution is None else {"resolution": resolution}))
 
 
-def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None,
+def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
+           tets: npt.ArrayLike | None = None, tet_vertices: npt.ArrayLike | None = None,
            **overrides: Any) -> Result:
     """Unfolds a closed triangle surface into its canonical pose.
 
@@ -126,13 +127,23 @@ def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None,
     The baselines and backends are methods: method="local_global" (default),
     "ceres", "dpmu", "lsmds".
 
+    tets, tet_vertices: a tet mesh to unfold instead of tetrahedralizing the
+    surface ((k, 4) indices into the (p, 3) tet_vertices, e.g. from TetWild or
+    meshio): its boundary must be the surface (same positions), else
+    InputError; the Result's tets are then these, the surface's vertices first.
+
     Returns a Result. Raises ConfigError (bad key or value), InputError (bad
     arrays or surface), NumericalError (the solve failed). The GIL is released
     while it runs, so other Python threads go on.
     """
     V, F = _arrays.surface(V, F)
     path, flat = _config.split(config, overrides)
-    return Result(**_core.unfold(V, F, path, flat))
+    if (tets is None) != (tet_vertices is None):
+        raise InputError("tets and tet_vertices go together: give both or neither")
+    if tets is not None:
+        tet_vertices = _arrays.vertices(tet_vertices, "tet_vertices")
+        tets = _arrays.elements(tets, len(tet_vertices), 4, "tets")
+    return Result(**_core.unfold(V, F, path, flat, tets, tet_vertices))
 
 
 def compare(V: npt.ArrayLike, F: npt.ArrayLike,

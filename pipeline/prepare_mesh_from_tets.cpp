@@ -1,0 +1,54 @@
+#include "pipeline/prepare_mesh_from_tets.h"
+
+#include <glog/logging.h>
+
+#include <string>
+#include <vector>
+
+#include "core/errors.h"
+#include "mesh/check_surface_mesh.h"
+#include "mesh/sort_interior_vertices.h"
+#include "mesh/tet_mesh_boundary.h"
+
+namespace unfold {
+
+PreparedMesh prepare_mesh_from_tets(const SurfaceMesh& surface, const Eigen::MatrixX3d& V,
+                                    const Eigen::MatrixX4i& T, const Options& options) {
+  validate_options(options);
+  if (options.target_vertices > 0)
+    throw UsageError(
+        "simplify.target_vertices does not apply to a given tet mesh (it is used as "
+        "it is); leave it 0");
+  PreparedMesh prepared;
+  prepared.warnings = check_surface_mesh(surface, true).warnings;
+  for (const auto& w : prepared.warnings) LOG(WARNING) << w;
+  const Eigen::VectorXi surface_row = match_tet_mesh_boundary(surface, V, T);
+
+  // New row of each old one: the surface's first, the others after them in order.
+  const int n = int(V.rows()), ns = int(surface.V.rows());
+  std::vector<int> new_row(size_t(n), -1);
+  for (int i = 0; i < ns; ++i) new_row[size_t(surface_row[i])] = i;
+  std::vector<bool> used(size_t(n), false);
+  for (Eigen::Index k = 0; k < T.size(); ++k) used[size_t(T.data()[k])] = true;
+  int next = ns;
+  for (int v = 0; v < n; ++v) {
+    if (!used[size_t(v)])
+      throw InputError("tet mesh vertex " + std::to_string(v) + " is in no tetrahedron");
+    if (new_row[size_t(v)] < 0) new_row[size_t(v)] = next++;
+  }
+  TetMesh& tets = prepared.tets;
+  tets.V.resize(n, 3);
+  for (int v = 0; v < n; ++v) tets.V.row(new_row[size_t(v)]) = V.row(v);
+  tets.T = T.unaryExpr([&new_row](int v) { return new_row[size_t(v)]; });
+  tets.num_surface_vertices = ns;
+  sort_interior_vertices(&tets);
+  prepared.surface = surface;
+  prepared.tet_report.route = "given";
+  prepared.tet_report.num_tets = int(T.rows());
+  prepared.tet_report.num_interior_points = n - ns;
+  LOG(INFO) << "given tet mesh: " << n << " vertices (" << ns << " on the surface), " << T.rows()
+            << " tets";
+  return prepared;
+}
+
+}  // namespace unfold

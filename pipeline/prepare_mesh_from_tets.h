@@ -1,0 +1,26 @@
+// A tet mesh given by the user (TetWild, Gmsh, a simulation, an earlier
+// run's --rest_tet_output) instead of one tetrahedralize makes: prepare_mesh's
+// counterpart, after which unfold_prepared runs as usual.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "config/options.h"
+#include "mesh/surface_mesh.h"
+#include "pipeline/unfold_surface.h"
+
+namespace unfold {
+
+/// Checks that `surface` is the boundary of the tets T over vertices V and
+/// orders the tet mesh as the solver expects: the surface's vertices first, in
+/// its order, then the interior ones (sort_interior_vertices). The tet report's
+/// route is "given".
+/// @param surface  the surface (e.g. tet_mesh_boundary(V, T)); checked as prepare_mesh does
+/// @throws InputError if the surface fails the checks, is not the tets' boundary
+///         (match_tet_mesh_boundary) or a tet vertex is in no tetrahedron;
+///         UsageError for bad options or simplify.target_vertices > 0 (a given
+///         tet mesh is not simplified)
+PreparedMesh prepare_mesh_from_tets(const SurfaceMesh& surface, const Eigen::MatrixX3d& V,
+                                    const Eigen::MatrixX4i& T, const Options& options);
+
+}  // namespace unfold
