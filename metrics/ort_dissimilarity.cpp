@@ -11,19 +11,6 @@
 namespace unfold {
 namespace {
 
-// The 24 rotations of a cube: signed permutation matrices with det +1.
-std::vector<Eigen::Matrix3d> cube_rotations() {
-  std::vector<Eigen::Matrix3d> rotations;
-  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (const auto& p : permutations)
-    for (int signs = 0; signs < 8; ++signs) {
-      Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
-      for (int k = 0; k < 3; ++k) R(k, p[k]) = (signs >> k & 1) ? -1 : 1;
-      if (R.determinant() > 0) rotations.push_back(R);
-    }
-  return rotations;
-}
-
 Eigen::MatrixX3d every_kth_row(const Eigen::MatrixX3d& V, Eigen::Index count) {
   const Eigen::Index stride = (V.rows() + count - 1) / count;
   Eigen::MatrixX3d S((V.rows() + stride - 1) / stride, 3);
@@ -36,6 +23,18 @@ double bounding_box_volume(const Eigen::MatrixX3d& V) {
 }
 
 }  // namespace
+
+std::vector<Eigen::Matrix3d> cube_rotations() {
+  std::vector<Eigen::Matrix3d> rotations;
+  const int permutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : permutations)
+    for (int signs = 0; signs < 8; ++signs) {
+      Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
+      for (int k = 0; k < 3; ++k) R(k, p[k]) = (signs >> k & 1) ? -1 : 1;
+      if (R.determinant() > 0) rotations.push_back(R);
+    }
+  return rotations;
+}
 
 Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
   // Area-weighted second moments: each face's area shared by its corners.

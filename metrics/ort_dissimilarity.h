@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace unfold {
 
@@ -26,6 +27,10 @@ Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
 /// @throws UsageError for fewer than 4 vertices, sample_points < 4 or zero area
 Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
                             int sample_points);
+
+/// The 24 rotations of a cube (signed permutation matrices with det +1): the
+/// ambiguity left by ort_orientation.
+std::vector<Eigen::Matrix3d> cube_rotations();
 
 /// The symmetric mean squared nearest-point distance,
 /// (mean_a min_b |a - b|^2 + mean_b min_a |a - b|^2) / 2.

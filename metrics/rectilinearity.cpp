@@ -54,7 +54,7 @@ Eigen::Matrix3d rectilinearity_orientation(const Eigen::MatrixX3d& V, const Eige
   std::pair<double, Eigen::Matrix3d> best = candidates[0];
   for (int c = 0; c < 3; ++c) {
     auto [value, rotation] = candidates[size_t(c)];
-    for (double step = 0.05; step > 1e-4;) {
+    for (double step = 0.05; step > 1e-7;) {
       bool improved = false;
       for (int axis = 0; axis < 3; ++axis)
         for (double sign : {-1.0, 1.0}) {

@@ -22,7 +22,7 @@ double rectilinearity(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 /// The rotation R maximising rect(R): the best of 512 rotations spread
 /// uniformly over SO(3) (a super-Fibonacci spiral, Alexa 2022), each of the
 /// best 3 refined by coordinate descent over small rotations about the axes
-/// down to 1e-4 rad. Defined up to the 24 rotations of a cube.
+/// down to 1e-7 rad. Defined up to the 24 rotations of a cube.
 /// @throws UsageError for a mesh of zero area
 Eigen::Matrix3d rectilinearity_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
 

@@ -562,6 +562,7 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
   // sharded run left them) and its measures.
   const auto descriptors = load_descriptors(out, meshes, labels, options);
   std::ostringstream retrieval, pose;
+  pose << "class,method,pose_distance,mean_ratio,max_ratio,pairs\n";
   retrieval << "method,framework,queries,nn,first_tier,second_tier,e_measure,dcg";
   for (int l = 1; l <= kRecallLevels; ++l)
     retrieval << ",precision_" << std::fixed << std::setprecision(2) << double(l) / kRecallLevels;

@@ -47,6 +47,15 @@ std::string number(double x, const char* format = "%.4f") {
   return text;
 }
 
+// A Markdown table's header: the leading column names, then one per method.
+std::string table_header(const std::vector<std::string>& leading,
+                         const std::vector<std::string>& methods) {
+  std::string head = "|", rule = "|";
+  for (const auto& name : leading) head += " " + name + " |", rule += "---|";
+  for (const auto& m : methods) head += " " + m + " |", rule += "---|";
+  return head + "\n" + rule + "\n";
+}
+
 // One line of retrieval.csv (pipeline/batch_run.h), the run label appended to
 // the method.
 struct RetrievalRow {
@@ -89,11 +98,7 @@ std::string retrieval_table(const std::vector<ReportRun>& runs) {
       frameworks.push_back(r.framework);
   }
   std::ostringstream md;
-  md << "| framework | measure |";
-  for (const auto& m : methods) md << ' ' << m << " |";
-  md << "\n|---|---|";
-  for (size_t k = 0; k < methods.size(); ++k) md << "---|";
-  md << '\n';
+  md << table_header({"framework", "measure"}, methods);
   for (const auto& f : frameworks)
     for (int k = 0; k < 5; ++k) {
       md << "| " << f << " | " << kMeasureNames[k] << " |";
@@ -133,11 +138,7 @@ std::string pose_table(const std::vector<ReportRun>& runs, bool ratios) {
   }
   if (cells.empty()) return "(none)\n";
   std::ostringstream md;
-  md << "| class |";
-  for (const auto& m : methods) md << ' ' << m << " |";
-  md << "\n|---|";
-  for (size_t k = 0; k < methods.size(); ++k) md << "---|";
-  md << '\n';
+  md << table_header({"class"}, methods);
   for (const auto& [c, values] : cells) {
     md << "| " << c << " |";
     for (const auto& m : methods) md << ' ' << (values.count(m) ? values.at(m) : "-") << " |";
@@ -155,12 +156,8 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
   for (const auto& r : rows) classes.insert(r.shape_class);
   std::ostringstream md;
   for (int k = 0; k < 3; ++k) {
-    md << "### Mean " << kMetricNames[k]
-       << " per class (ok shapes that computed it / all)\n\n| class |";
-    for (const auto& m : methods) md << ' ' << m << " |";
-    md << "\n|---|";
-    for (size_t i = 0; i < methods.size(); ++i) md << "---|";
-    md << '\n';
+    md << "### Mean " << kMetricNames[k] << " per class (ok shapes that computed it / all)\n\n"
+       << table_header({"class"}, methods);
     std::vector<std::string> row_classes(classes.begin(), classes.end());
     row_classes.push_back("all");
     for (const auto& c : row_classes) {

@@ -15,7 +15,9 @@
 #include "output_checks.h"
 #include "pipeline/batch_run.h"
 #include "pipeline/evaluation_report.h"
+#include "render/plot_axes.h"
 #include "render/plot_cdf.h"
+#include "render/plot_precision_recall.h"
 #include "shapes/articulated_shape.h"
 #include "test_files.h"
 #include "test_meshes.h"
@@ -150,7 +152,7 @@ TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
   std::filesystem::create_directories(in);
   for (int k = 0; k < 4; ++k)
     write_surface_mesh(in + "/" + (k < 2 ? "a" : "b") + std::to_string(k % 2) + ".off",
-                       make_articulated_shape(ShapePose::preset(k), k < 2 ? 24 : 16));
+                       make_articulated_shape(ShapePose::preset(k % 3), k < 2 ? 24 : 16));
   auto batch = [&](const std::string& out, const std::string& extra) {
     const std::string command =
         std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in + " --output_dir " +
@@ -226,18 +228,33 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("pr_ort.png")));
 }
 
-TEST(Report, CdfPlotDrawsEachSeriesAndRefusesEmptyOnes) {
-  const Image image = plot_cdf({{"a", {0.1, 0.5, 0.9}}, {"b", {0.3}}}, "x");
-  int blue = 0, red = 0;
+// Pixels of the first two series' colours.
+std::pair<int, int> series_pixels(const Image& image) {
+  int first = 0, second = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      blue += image.at(x, y) == Rgb{31, 119, 180};
-      red += image.at(x, y) == Rgb{214, 39, 40};
+      first += image.at(x, y) == series_color(0);
+      second += image.at(x, y) == series_color(1);
     }
+  return {first, second};
+}
+
+TEST(Report, CdfPlotDrawsEachSeriesAndRefusesEmptyOnes) {
+  const auto [blue, red] = series_pixels(plot_cdf({{"a", {0.1, 0.5, 0.9}}, {"b", {0.3}}}, "x"));
   EXPECT_GT(blue, 100);
   EXPECT_GT(red, 100);
   EXPECT_THROW(plot_cdf({{"a", {}}}, "x"), UsageError);
   EXPECT_THROW(plot_cdf({}, "x"), UsageError);
+}
+
+TEST(Report, PrecisionRecallPlotDrawsEachSeriesAndRefusesBadOnes) {
+  const auto [blue, red] =
+      series_pixels(plot_precision_recall({{"a", {1, 0.8, 0.5}}, {"b", {0.5, 0.5, 0.2}}}, "P"));
+  EXPECT_GT(blue, 100);
+  EXPECT_GT(red, 100);
+  EXPECT_THROW(plot_precision_recall({{"a", {0.5}}}, "P"), UsageError);
+  EXPECT_THROW(plot_precision_recall({{"a", {0.5, 1.5}}}, "P"), UsageError);
+  EXPECT_THROW(plot_precision_recall({}, "P"), UsageError);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Retrieval: the benchmark measures on a hand-made matrix whose values are
 // worked out by hand; rectilinearity and the ORT normalisation invariant to a
 // rigid motion and a scale; the ORT dissimilarity's value on a hand-made pair;
-// similarity blocks that assemble to the matrix computed in one go.
+// similarity blocks that assemble to the matrix computed in one go; the
+// descriptors' exact round trip.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +14,6 @@
 #include "metrics/rectilinearity.h"
 #include "metrics/retrieval_measures.h"
 #include "pipeline/similarity_blocks.h"
-#include "render/plot_precision_recall.h"
 #include "shapes/articulated_shape.h"
 #include "test_files.h"
 #include "test_meshes.h"
@@ -96,19 +96,6 @@ TEST(Rectilinearity, ARotatedBoxIsFoundAxisAlignedAndASphereIsNot) {
                UsageError);
 }
 
-// The 24 rotations of a cube, as ort_dissimilarity tries them.
-std::vector<Eigen::Matrix3d> cube_group() {
-  std::vector<Eigen::Matrix3d> result;
-  const int p[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (const auto& q : p)
-    for (int s = 0; s < 8; ++s) {
-      Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
-      for (int k = 0; k < 3; ++k) R(k, q[k]) = (s >> k & 1) ? -1 : 1;
-      if (R.determinant() > 0) result.push_back(R);
-    }
-  return result;
-}
-
 TEST(Ort, TheNormalisedSampleIsInvariantToARigidMotionAndAScale) {
   const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 24);
   const Eigen::MatrixX3i F = triangulate_faces(shape);
@@ -119,7 +106,7 @@ TEST(Ort, TheNormalisedSampleIsInvariantToARigidMotionAndAScale) {
   ASSERT_EQ(a.rows(), b.rows());
   // The same points, up to the orientation's cube ambiguity.
   double closest = INFINITY;
-  for (const Eigen::Matrix3d& R : cube_group())
+  for (const Eigen::Matrix3d& R : cube_rotations())
     closest = std::min(closest, (a * R.transpose() - b).cwiseAbs().maxCoeff());
   EXPECT_LT(closest, 1e-6);
   EXPECT_LT(ort_dissimilarity(a, b, 20), 1e-12);
@@ -160,7 +147,7 @@ TEST(Ort, HandMadePairHasItsKnownMeanSquaredError) {
 TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
   std::vector<RetrievalDescriptor> d;
   std::vector<std::string> names;
-  const RetrievalOptions options{200, 10};
+  const RetrievalOptions options{100, 5};
   for (int k = 0; k < 5; ++k) {
     const SurfaceMesh s = make_articulated_shape(ShapePose::preset(k % 3), 16);
     d.push_back(retrieval_descriptor({s.V * (1 + 0.1 * k), s.faces}, options));
@@ -197,7 +184,7 @@ TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
                                     other, options, &read),
               0);
     EXPECT_EQ(read_similarity_block(blocks + "/m_" + std::string(framework_name(f)) + ".0-of-3.csv",
-                                    names, RetrievalOptions{100, 10}, &read),
+                                    names, RetrievalOptions{100, 6}, &read),
               0);
   }
 }
@@ -214,21 +201,6 @@ TEST(SimilarityBlocks, DescriptorsRoundTripExactly) {
   EXPECT_EQ(back->ort, d.ort);
   EXPECT_FALSE(read_retrieval_descriptor(dir.file("d.txt"), RetrievalOptions{301, 5}));
   EXPECT_FALSE(read_retrieval_descriptor(dir.file("missing.txt"), options));
-}
-
-TEST(PrecisionRecallPlot, DrawsEachSeriesAndRefusesBadOnes) {
-  const Image image = plot_precision_recall({{"a", {1, 0.8, 0.5}}, {"b", {0.5, 0.5, 0.2}}}, "P");
-  int blue = 0, red = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      blue += image.at(x, y) == Rgb{31, 119, 180};
-      red += image.at(x, y) == Rgb{214, 39, 40};
-    }
-  EXPECT_GT(blue, 100);
-  EXPECT_GT(red, 100);
-  EXPECT_THROW(plot_precision_recall({{"a", {0.5}}}, "P"), UsageError);
-  EXPECT_THROW(plot_precision_recall({{"a", {0.5, 1.5}}}, "P"), UsageError);
-  EXPECT_THROW(plot_precision_recall({}, "P"), UsageError);
 }
 
 }  // namespace
