@@ -421,7 +421,8 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
     for (const auto& m : methods)
       for (const char* suffix : {".row", ".off", ".on_input.off", ".json"})
         fs::remove(out.file(m, stem(mesh), suffix), ec);
-    for (const auto& m : methods) fs::remove(out.descriptor(m, stem(mesh)), ec);
+    for (const auto& label : retrieval_labels(methods))
+      fs::remove(out.descriptor(label, stem(mesh)), ec);
     todo.push_back(mesh);
   }
   if (!todo.empty()) fs::remove_all(out.blocks(), ec);  // rows of shapes about to change
