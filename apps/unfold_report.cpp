@@ -11,7 +11,8 @@
 DEFINE_string(runs, "", "comma-separated unfold_batch output directories (required)");
 DEFINE_string(labels, "", "comma-separated labels, one per run, appended to method names");
 DEFINE_string(markdown, "", "write the report here; empty: print it");
-DEFINE_string(plots_dir, "", "write cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png here");
+DEFINE_string(plots_dir, "",
+              "write cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png, pr_icp.png, pr_ort.png here");
 
 namespace {
 std::vector<std::string> split(const std::string& text) {
@@ -45,7 +46,10 @@ int main(int argc, char** argv) {
       std::fputs(md.c_str(), stdout);
     else
       unfold::write_file_atomically(FLAGS_markdown, [&](std::ostream& s) { s << md; });
-    if (!FLAGS_plots_dir.empty()) unfold::write_cdf_plots(runs, FLAGS_plots_dir);
+    if (!FLAGS_plots_dir.empty()) {
+      unfold::write_cdf_plots(runs, FLAGS_plots_dir);
+      unfold::write_precision_recall_plots(runs, FLAGS_plots_dir);
+    }
     return 0;
   });
 }

@@ -7,24 +7,34 @@
 #include "metrics/rigid_alignment.h"
 
 namespace unfold {
-namespace {
 
-// Index in B of the nearest point to each row of A (brute force: samples are small).
 std::vector<int> nearest_points(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
-                                double* mean_distance) {
+                                double* mean_distance, double* mean_squared) {
   std::vector<int> nearest(size_t(A.rows()));
-  double sum = 0;
+  double sum = 0, sum_squared = 0;
   for (Eigen::Index i = 0; i < A.rows(); ++i) {
     Eigen::Index best;
     const double d2 = (B.rowwise() - A.row(i)).rowwise().squaredNorm().minCoeff(&best);
     nearest[size_t(i)] = int(best);
-    sum += std::sqrt(d2);
+    sum += std::sqrt(d2), sum_squared += d2;
   }
-  *mean_distance = sum / double(A.rows());
+  if (mean_distance) *mean_distance = sum / double(A.rows());
+  if (mean_squared) *mean_squared = sum_squared / double(A.rows());
   return nearest;
 }
 
-}  // namespace
+Eigen::MatrixX3d icp_align(const Eigen::MatrixX3d& A, Eigen::MatrixX3d B, int iterations) {
+  for (int it = 0; it < iterations; ++it) {
+    const std::vector<int> nearest = nearest_points(B, A, nullptr);
+    Eigen::MatrixX3d matched(B.rows(), 3);
+    for (Eigen::Index i = 0; i < B.rows(); ++i) matched.row(i) = A.row(nearest[size_t(i)]);
+    const RigidAlignment step = align_rigidly(matched, B);
+    const double moved = (step.aligned - B).norm();
+    B = step.aligned;
+    if (moved < 1e-9 * std::sqrt(double(B.rows()))) break;
+  }
+  return B;
+}
 
 Eigen::MatrixX3d retrieval_sample(const Eigen::MatrixX3d& V, const RetrievalOptions& options) {
   if (V.rows() < 4 || options.sample_points < 4)
@@ -60,16 +70,7 @@ double shape_dissimilarity(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
     const double d = nearest_point_distance(A, flipped);
     if (d < best_distance) best_distance = d, best = flipped;
   }
-  for (int it = 0; it < options.icp_iterations; ++it) {
-    double mean;
-    const std::vector<int> nearest = nearest_points(best, A, &mean);
-    Eigen::MatrixX3d matched(best.rows(), 3);
-    for (Eigen::Index i = 0; i < best.rows(); ++i) matched.row(i) = A.row(nearest[size_t(i)]);
-    const RigidAlignment step = align_rigidly(matched, best);
-    const double moved = (step.aligned - best).norm();
-    best = step.aligned;
-    if (moved < 1e-9 * std::sqrt(double(best.rows()))) break;
-  }
+  best = icp_align(A, best, options.icp_iterations);
   return std::min(best_distance, nearest_point_distance(A, best));
 }
 
@@ -84,22 +85,6 @@ Eigen::MatrixXd dissimilarity_matrix(const std::vector<Eigen::MatrixX3d>& sample
     D(i, j) = D(j, i) = shape_dissimilarity(samples[size_t(i)], samples[size_t(j)], options);
   }
   return D;
-}
-
-double nearest_neighbor_accuracy(const Eigen::MatrixXd& D,
-                                 const std::vector<std::string>& classes) {
-  const Eigen::Index n = D.rows();
-  if (D.cols() != n || Eigen::Index(classes.size()) != n || n < 2)
-    throw UsageError(
-        "nearest_neighbor_accuracy: need a square matrix with a class per shape (>= 2)");
-  int correct = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    Eigen::Index best = -1;
-    for (Eigen::Index j = 0; j < n; ++j)
-      if (j != i && (best < 0 || D(i, j) < D(i, best))) best = j;
-    correct += classes[size_t(best)] == classes[size_t(i)];
-  }
-  return double(correct) / double(n);
 }
 
 }  // namespace unfold

@@ -2,7 +2,7 @@
 // shape becomes a normalised point sample (centred, unit RMS radius, principal
 // axes), two shapes' dissimilarity is their best rigid alignment distance
 // (PCA sign flips, then ICP, then the symmetric mean nearest-point distance),
-// and retrieval is scored by nearest-neighbour (NN) accuracy.
+// and retrieval is scored by metrics/retrieval_measures.h.
 #pragma once
 
 #include <Eigen/Core>
@@ -27,6 +27,18 @@ Eigen::MatrixX3d retrieval_sample(const Eigen::MatrixX3d& V, const RetrievalOpti
 /// @throws UsageError for an empty set
 double nearest_point_distance(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B);
 
+/// Index in B of the nearest point to each row of A (brute force: samples are
+/// small); the mean distance to it in *mean_distance, the mean squared
+/// distance in *mean_squared (either may be null).
+/// @pre B is not empty
+std::vector<int> nearest_points(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
+                                double* mean_distance, double* mean_squared = nullptr);
+
+/// B moved onto A by ICP: `iterations` rounds of nearest points in A and the
+/// best rigid motion of B onto them (Kabsch), stopping early once B stays put.
+/// @pre A is not empty
+Eigen::MatrixX3d icp_align(const Eigen::MatrixX3d& A, Eigen::MatrixX3d B, int iterations);
+
 /// Dissimilarity of two normalised samples: B is tried under the four proper
 /// sign flips of the principal axes, the best refined by ICP (nearest points
 /// and Kabsch), then nearest_point_distance.
@@ -36,10 +48,5 @@ double shape_dissimilarity(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B,
 /// All pairwise dissimilarities (symmetric, zero diagonal), in parallel.
 Eigen::MatrixXd dissimilarity_matrix(const std::vector<Eigen::MatrixX3d>& samples,
                                      const RetrievalOptions& options);
-
-/// The fraction of shapes whose nearest other shape has their class.
-/// @throws UsageError if the sizes differ or there are fewer than 2 shapes
-double nearest_neighbor_accuracy(const Eigen::MatrixXd& dissimilarity,
-                                 const std::vector<std::string>& classes);
 
 }  // namespace unfold

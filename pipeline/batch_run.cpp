@@ -26,8 +26,11 @@
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
 #include "metrics/pose_invariance.h"
+#include "metrics/retrieval_measures.h"
 #include "pipeline/metrics_json.h"
 #include "pipeline/pose_invariance_tables.h"
+#include "pipeline/retrieval_descriptors.h"
+#include "pipeline/similarity_blocks.h"
 #include "pipeline/unfold_surface.h"
 
 namespace unfold {
@@ -109,6 +112,13 @@ struct Layout {
   std::string file(const std::string& method, const std::string& shape,
                    const std::string& suffix) const {
     return dir + "/" + method + "/" + shape + suffix;
+  }
+  std::string descriptor(const std::string& label, const std::string& shape) const {
+    return dir + "/descriptors/" + label + "/" + shape + ".txt";
+  }
+  std::string blocks() const { return dir + "/similarity_blocks"; }
+  std::string block_prefix(const std::string& label, RetrievalFramework f) const {
+    return label + "_" + framework_name(f);
   }
 };
 
@@ -240,6 +250,101 @@ class Progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
+// The forms retrieval compares: "raw" (the input poses), then each method.
+std::vector<std::string> retrieval_labels(const std::vector<std::string>& methods) {
+  std::vector<std::string> labels = {"raw"};
+  labels.insert(labels.end(), methods.begin(), methods.end());
+  return labels;
+}
+
+// The surface a label's descriptor comes from: the input, or the method's
+// canonical surface if its run is ok; nothing for an unreadable one.
+std::optional<SurfaceMesh> retrieval_form(const Layout& out, const std::string& label,
+                                          const std::string& mesh) {
+  try {
+    if (label == "raw") return read_surface_mesh(mesh);
+    const auto row = read_row_file(out.file(label, stem(mesh), ".row"));
+    if (row && row->status == "ok") return read_surface_mesh(out.file(label, stem(mesh), ".off"));
+  } catch (const InputError&) {
+  }
+  return std::nullopt;
+}
+
+// Per label, per mesh: the retrieval descriptor, read from its cache file or
+// computed (in parallel, a few meshes in memory at a time) and cached; nothing
+// where there is no form.
+std::vector<std::vector<std::optional<RetrievalDescriptor>>> load_descriptors(
+    const Layout& out, const std::vector<std::string>& meshes,
+    const std::vector<std::string>& labels, const RetrievalOptions& options) {
+  std::vector<std::vector<std::optional<RetrievalDescriptor>>> result(labels.size());
+  for (size_t l = 0; l < labels.size(); ++l) {
+    std::error_code ec;
+    fs::create_directories(out.dir + "/descriptors/" + labels[l], ec);
+    result[l].resize(meshes.size());
+    std::vector<size_t> todo;
+    for (size_t i = 0; i < meshes.size(); ++i) {
+      result[l][i] = read_retrieval_descriptor(out.descriptor(labels[l], stem(meshes[i])), options);
+      if (!result[l][i]) todo.push_back(i);
+    }
+    const size_t chunk = 16;
+    for (size_t start = 0; start < todo.size(); start += chunk) {
+      const size_t count = std::min(chunk, todo.size() - start);
+      std::vector<std::optional<SurfaceMesh>> forms;
+      for (size_t k = 0; k < count; ++k)
+        forms.push_back(retrieval_form(out, labels[l], meshes[todo[start + k]]));
+#pragma omp parallel for schedule(dynamic)
+      for (size_t k = 0; k < count; ++k) {
+        const size_t i = todo[start + k];
+        if (!forms[k]) continue;
+        try {
+          result[l][i] = retrieval_descriptor(*forms[k], options);
+        } catch (const UsageError& e) {  // a degenerate form is in no matrix
+          LOG(WARNING) << stem(meshes[i]) << ", " << labels[l]
+                       << ": no retrieval descriptor: " << e.what();
+        }
+      }
+      for (size_t k = 0; k < count; ++k) {
+        const size_t i = todo[start + k];
+        if (result[l][i])
+          write_retrieval_descriptor(out.descriptor(labels[l], stem(meshes[i])), *result[l][i],
+                                     options);
+      }
+    }
+  }
+  return result;
+}
+
+// The shapes of one label that have a descriptor, as matrix rows.
+struct RetrievalSet {
+  std::vector<std::string> names;
+  std::vector<RetrievalDescriptor> descriptors;
+};
+RetrievalSet retrieval_set(const std::vector<std::string>& meshes,
+                           const std::vector<std::optional<RetrievalDescriptor>>& descriptors) {
+  RetrievalSet set;
+  for (size_t i = 0; i < meshes.size(); ++i)
+    if (descriptors[i])
+      set.names.push_back(stem(meshes[i])), set.descriptors.push_back(*descriptors[i]);
+  return set;
+}
+
+// This shard's block of every label's and framework's similarity matrix.
+void write_similarity_blocks(const Layout& out, const std::vector<std::string>& meshes,
+                             const std::vector<std::string>& methods, int index, int count,
+                             const RetrievalOptions& options) {
+  const std::vector<std::string> labels = retrieval_labels(methods);
+  const auto descriptors = load_descriptors(out, meshes, labels, options);
+  std::error_code ec;
+  fs::create_directories(out.blocks(), ec);
+  for (size_t l = 0; l < labels.size(); ++l) {
+    const RetrievalSet set = retrieval_set(meshes, descriptors[l]);
+    for (const RetrievalFramework f : kRetrievalFrameworks)
+      write_similarity_block(out.blocks() + "/" + out.block_prefix(labels[l], f) + "." +
+                                 std::to_string(index) + "-of-" + std::to_string(count) + ".csv",
+                             similarity_block(set.descriptors, f, index, count, options), set.names,
+                             index, count, options);
+  }
+}
 }  // namespace
 
 std::string shape_class(const std::string& shape) {
@@ -316,8 +421,11 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
     for (const auto& m : methods)
       for (const char* suffix : {".row", ".off", ".on_input.off", ".json"})
         fs::remove(out.file(m, stem(mesh), suffix), ec);
+    for (const auto& label : retrieval_labels(methods))
+      fs::remove(out.descriptor(label, stem(mesh)), ec);
     todo.push_back(mesh);
   }
+  if (!todo.empty()) fs::remove_all(out.blocks(), ec);  // rows of shapes about to change
 
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   std::map<pid_t, std::pair<std::string, std::chrono::steady_clock::time_point>> running;
@@ -375,12 +483,21 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
                                              : "no result"});
     }
   }
+  load_descriptors(out, meshes, retrieval_labels(methods), o.retrieval);  // this shard's, cached
   if (o.shard_count == 1) {
     write_results_csv(out.dir + "/results.csv", rows);
     write_dataset_evaluation(out.dir, meshes, methods, o.retrieval);
   } else {
-    LOG(INFO) << "shard " << o.shard_index << "/" << o.shard_count
-              << ": dataset-wide files are written by a final run without --shard "
+    bool all_done = true;
+    for (const auto& mesh : all)
+      for (const auto& row : rows_of(mesh)) all_done = all_done && row.has_value();
+    if (all_done)
+      write_similarity_blocks(out, all, methods, o.shard_index, o.shard_count, o.retrieval);
+    LOG(INFO) << "shard " << o.shard_index << "/" << o.shard_count << ": "
+              << (all_done ? "wrote its block of the similarity matrices; "
+                           : "the similarity block waits for every shape (run the shard again "
+                             "with --skip_existing); ")
+              << "dataset-wide files are written by a final run without --shard "
                  "(with --skip_existing)";
   }
   return rows;
@@ -425,55 +542,62 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
       readable[i] = false;
     }
   }
-  // Per method: canonical forms (retrieval) and forms on the input vertices (pose).
-  std::vector<std::string> labels = {"raw"};
-  std::vector<std::vector<std::optional<Eigen::MatrixX3d>>> forms(1), on_input(1);
-  for (size_t i = 0; i < n; ++i) {
-    forms[0].emplace_back(readable[i] ? std::optional(inputs[i].V) : std::nullopt);
-    on_input[0].push_back(forms[0].back());
-  }
-  for (const auto& m : methods) {
-    labels.push_back(m);
-    forms.emplace_back(n);
-    on_input.emplace_back(n);
+  // Per method: the forms on the input vertices (pose).
+  const std::vector<std::string> labels = retrieval_labels(methods);
+  std::vector<std::vector<std::optional<Eigen::MatrixX3d>>> on_input(labels.size());
+  for (size_t i = 0; i < n; ++i)
+    on_input[0].emplace_back(readable[i] ? std::optional(inputs[i].V) : std::nullopt);
+  for (size_t m = 1; m < labels.size(); ++m) {
+    on_input[m].resize(n);
     for (size_t i = 0; i < n; ++i) {
-      const auto row = read_row_file(out.file(m, names[i], ".row"));
+      const auto row = read_row_file(out.file(labels[m], names[i], ".row"));
       if (!readable[i] || !row || row->status != "ok") continue;
-      const SurfaceMesh canonical = read_surface_mesh(out.file(m, names[i], ".off"));
-      forms.back()[i] = canonical.V;
-      const std::string carried = out.file(m, names[i], ".on_input.off");
-      if (fs::exists(carried))
-        on_input.back()[i] = read_surface_mesh(carried).V;
-      else if (canonical.V.rows() == inputs[i].V.rows())
-        on_input.back()[i] = canonical.V;
+      const std::string carried = out.file(labels[m], names[i], ".on_input.off");
+      const SurfaceMesh form =
+          read_surface_mesh(fs::exists(carried) ? carried : out.file(labels[m], names[i], ".off"));
+      if (form.V.rows() == inputs[i].V.rows()) on_input[m][i] = form.V;
     }
   }
 
+  // Retrieval: per label and framework, the matrix (from block files where a
+  // sharded run left them) and its measures.
+  const auto descriptors = load_descriptors(out, meshes, labels, options);
   std::ostringstream retrieval;
-  retrieval << "method,nn_accuracy\n";
+  retrieval << "method,framework,queries,nn,first_tier,second_tier,e_measure,dcg";
+  for (int l = 1; l <= kRecallLevels; ++l)
+    retrieval << ",precision_" << std::fixed << std::setprecision(2) << double(l) / kRecallLevels;
+  retrieval << '\n' << std::defaultfloat << std::setprecision(10);
   for (size_t m = 0; m < labels.size(); ++m) {
-    std::vector<size_t> have;
-    std::vector<Eigen::MatrixX3d> samples;
-    for (size_t i = 0; i < n; ++i)
-      if (forms[m][i]) {
-        have.push_back(i);
-        samples.push_back(retrieval_sample(*forms[m][i], options));
+    const RetrievalSet set = retrieval_set(meshes, descriptors[m]);
+    std::vector<std::string> set_classes;
+    for (const auto& name : set.names) set_classes.push_back(shape_class(name));
+    if (set.names.size() < 2) continue;
+    for (const RetrievalFramework f : kRetrievalFrameworks) {
+      const Eigen::MatrixXd D = assemble_similarity(set.descriptors, set.names, f, out.blocks(),
+                                                    out.block_prefix(labels[m], f), options);
+      try {
+        const RetrievalMeasures r = retrieval_measures(D, set_classes);
+        retrieval << labels[m] << ',' << framework_name(f) << ',' << r.queries << ',' << r.nn << ','
+                  << r.first_tier << ',' << r.second_tier << ',' << r.e_measure << ',' << r.dcg;
+        for (double p : r.precision) retrieval << ',' << p;
+        retrieval << '\n';
+      } catch (const UsageError& e) {  // no class with two shapes: a matrix, no measures
+        LOG(WARNING) << labels[m] << ", " << framework_name(f) << ": " << e.what();
       }
-    if (have.size() < 2) continue;
-    const Eigen::MatrixXd D = dissimilarity_matrix(samples, options);
-    std::vector<std::string> have_classes;
-    for (size_t i : have) have_classes.push_back(classes[i]);
-    retrieval << labels[m] << ',' << nearest_neighbor_accuracy(D, have_classes) << '\n';
-    write_file_atomically(output_dir + "/similarity_" + labels[m] + ".csv", [&](std::ostream& s) {
-      s << "shape";
-      for (size_t i : have) s << ',' << names[i];
-      s << '\n' << std::setprecision(8);
-      for (size_t a = 0; a < have.size(); ++a) {
-        s << names[have[a]];
-        for (size_t b = 0; b < have.size(); ++b) s << ',' << D(Eigen::Index(a), Eigen::Index(b));
-        s << '\n';
-      }
-    });
+      const std::string suffix = f == RetrievalFramework::icp ? "" : "_ort";
+      write_file_atomically(
+          output_dir + "/similarity_" + labels[m] + suffix + ".csv", [&](std::ostream& s) {
+            s << "shape";
+            for (const auto& name : set.names) s << ',' << name;
+            s << '\n' << std::setprecision(std::numeric_limits<double>::max_digits10);
+            for (size_t a = 0; a < set.names.size(); ++a) {
+              s << set.names[a];
+              for (size_t b = 0; b < set.names.size(); ++b)
+                s << ',' << D(Eigen::Index(a), Eigen::Index(b));
+              s << '\n';
+            }
+          });
+    }
   }
   // Pose invariance per pair of poses of a class, on the class's correspondence,
   // and the ratio to the raw poses' distance: what a user of canonical forms gains.

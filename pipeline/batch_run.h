@@ -10,7 +10,10 @@
 //   <method>/<shape>.json          metrics JSON
 //   <method>/<shape>.row           this shape's results.csv row
 //   logs/<shape>.log               the child's log
-//   results.csv, retrieval.csv, pose_invariance.csv, similarity_<method>.csv
+//   descriptors/<method>/<shape>.txt  retrieval descriptors (raw = the inputs), cached
+//   similarity_blocks/<method>_<framework>.<i>-of-<N>.csv  a shard's rows of a matrix
+//   results.csv, retrieval.csv, pose_invariance.csv,
+//   similarity_<method>.csv (ICP), similarity_<method>_ort.csv (ORT)
 #pragma once
 
 #include <map>
@@ -29,7 +32,8 @@ struct BatchOptions {
   std::map<std::string, std::string> overrides;  ///< YAML path -> value, for every config
   int jobs = 1;                                  ///< shapes run at once
   int shard_index = 0;                           ///< run shapes k with k % shard_count == index
-  int shard_count = 1;                           ///< > 1: no dataset-wide files (collect later)
+  int shard_count = 1;         ///< > 1: no dataset-wide files (collect later); once every
+                               ///< shape is done, the shard's block of the similarity matrices
   bool skip_existing = false;  ///< keep shapes whose rows all exist with status ok
   bool progress = true;        ///< progress bar on stderr when it is a terminal
   RetrievalOptions retrieval;
@@ -68,9 +72,14 @@ void write_results_csv(const std::string& path, const std::vector<BatchRow>& row
 /// Reads a file written by write_results_csv. @throws InputError
 std::vector<BatchRow> read_results_csv(const std::string& path);
 
-/// Retrieval (retrieval.csv: method,nn_accuracy; similarity_<method>.csv) and
-/// pose invariance (pipeline/pose_invariance_tables.h) for the raw input poses
-/// and each method's canonical forms found in output_dir.
+/// Retrieval (retrieval.csv: method,framework,queries,nn,first_tier,
+/// second_tier,e_measure,dcg,precision_0.05..precision_1.00 as
+/// metrics/retrieval_measures.h; the matrices similarity_<method>.csv and
+/// similarity_<method>_ort.csv, assembled from the block files of sharded runs
+/// and computed where none is found) and pose invariance (pose_invariance.csv:
+/// class,method,pose_distance) for the raw input poses and each method's
+/// canonical forms found in output_dir; descriptors are read from their cache
+/// or computed and cached.
 /// @param meshes input mesh paths; methods the config stems
 /// Unreadable input meshes are left out. @throws OutputError
 void write_dataset_evaluation(const std::string& output_dir, const std::vector<std::string>& meshes,

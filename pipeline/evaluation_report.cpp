@@ -9,7 +9,9 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "metrics/retrieval_measures.h"
 #include "render/plot_cdf.h"
+#include "render/plot_precision_recall.h"
 #include "render/write_png.h"
 
 namespace unfold {
@@ -45,39 +47,70 @@ std::string number(double x, const char* format = "%.4f") {
   return text;
 }
 
-// A CSV file of the runs (retrieval.csv) as one Markdown table, the run label
-// appended to the method column (the last but one).
-std::string csv_table(const std::vector<ReportRun>& runs, const std::string& file) {
-  std::ostringstream md;
-  bool header = false;
+// A Markdown table's header: the leading column names, then one per method.
+std::string table_header(const std::vector<std::string>& leading,
+                         const std::vector<std::string>& methods) {
+  std::string head = "|", rule = "|";
+  for (const auto& name : leading) head += " " + name + " |", rule += "---|";
+  for (const auto& m : methods) head += " " + m + " |", rule += "---|";
+  return head + "\n" + rule + "\n";
+}
+
+// One line of retrieval.csv (pipeline/batch_run.h), the run label appended to
+// the method.
+struct RetrievalRow {
+  std::string method, framework;
+  std::vector<double> measures;   // nn, first_tier, second_tier, e_measure, dcg
+  std::vector<double> precision;  // at recall 0.05, ..., 1
+};
+const char* kMeasureNames[5] = {"NN", "FT", "ST", "E", "DCG"};
+
+std::vector<RetrievalRow> retrieval_rows(const std::vector<ReportRun>& runs) {
+  std::vector<RetrievalRow> rows;
   for (const auto& run : runs) {
-    std::ifstream in(run.output_dir + "/" + file);
+    std::ifstream in(run.output_dir + "/retrieval.csv");
     std::string line;
-    if (!in || !std::getline(in, line)) continue;
-    std::vector<std::string> names;
-    std::istringstream h(line);
-    for (std::string f; std::getline(h, f, ',');) names.push_back(f);
-    if (!header) {
-      md << '|';
-      for (const auto& n : names) md << ' ' << n << " |";
-      md << "\n|";
-      for (size_t k = 0; k < names.size(); ++k) md << "---|";
-      md << '\n';
-      header = true;
-    }
+    if (!in || !std::getline(in, line) || line.rfind("method,framework,queries,", 0) != 0)
+      continue;  // none, or from an older version
     while (std::getline(in, line)) {
       std::vector<std::string> f;
       std::istringstream s(line);
       for (std::string x; std::getline(s, x, ',');) f.push_back(x);
-      if (f.size() != names.size()) continue;
-      if (!run.label.empty() && f.size() >= 2) f[f.size() - 2] += "@" + run.label;
-      f.back() = number(std::stod(f.back()));
-      md << '|';
-      for (const auto& x : f) md << ' ' << x << " |";
-      md << '\n';
+      if (f.size() != size_t(8 + kRecallLevels)) continue;
+      RetrievalRow r{run.label.empty() ? f[0] : f[0] + "@" + run.label, f[1], {}, {}};
+      for (size_t k = 3; k < f.size(); ++k)
+        (k < 8 ? r.measures : r.precision).push_back(std::stod(f[k]));
+      rows.push_back(r);
     }
   }
-  return header ? md.str() : "(none)\n";
+  return rows;
+}
+
+// Like the paper's Table 3: a row per framework and measure, a column per method.
+std::string retrieval_table(const std::vector<ReportRun>& runs) {
+  const std::vector<RetrievalRow> rows = retrieval_rows(runs);
+  if (rows.empty()) return "(none)\n";
+  std::vector<std::string> methods, frameworks;
+  for (const auto& r : rows) {
+    if (std::find(methods.begin(), methods.end(), r.method) == methods.end())
+      methods.push_back(r.method);
+    if (std::find(frameworks.begin(), frameworks.end(), r.framework) == frameworks.end())
+      frameworks.push_back(r.framework);
+  }
+  std::ostringstream md;
+  md << table_header({"framework", "measure"}, methods);
+  for (const auto& f : frameworks)
+    for (int k = 0; k < 5; ++k) {
+      md << "| " << f << " | " << kMeasureNames[k] << " |";
+      for (const auto& m : methods) {
+        std::string cell = "-";
+        for (const auto& r : rows)
+          if (r.method == m && r.framework == f) cell = number(r.measures[size_t(k)], "%.3f");
+        md << ' ' << cell << " |";
+      }
+      md << '\n';
+    }
+  return md.str();
 }
 
 // pose_invariance.csv of the runs pivoted: classes x methods; the mean
@@ -109,11 +142,7 @@ std::string pose_table(const std::vector<ReportRun>& runs, bool ratios) {
   }
   if (cells.empty()) return "(none)\n";
   std::ostringstream md;
-  md << "| class |";
-  for (const auto& m : methods) md << ' ' << m << " |";
-  md << "\n|---|";
-  for (size_t k = 0; k < methods.size(); ++k) md << "---|";
-  md << '\n';
+  md << table_header({"class"}, methods);
   for (const auto& [c, values] : cells) {
     md << "| " << c << " |";
     for (const auto& m : methods) md << ' ' << (values.count(m) ? values.at(m) : "-") << " |";
@@ -131,12 +160,8 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
   for (const auto& r : rows) classes.insert(r.shape_class);
   std::ostringstream md;
   for (int k = 0; k < 3; ++k) {
-    md << "### Mean " << kMetricNames[k]
-       << " per class (ok shapes that computed it / all)\n\n| class |";
-    for (const auto& m : methods) md << ' ' << m << " |";
-    md << "\n|---|";
-    for (size_t i = 0; i < methods.size(); ++i) md << "---|";
-    md << '\n';
+    md << "### Mean " << kMetricNames[k] << " per class (ok shapes that computed it / all)\n\n"
+       << table_header({"class"}, methods);
     std::vector<std::string> row_classes(classes.begin(), classes.end());
     row_classes.push_back("all");
     for (const auto& c : row_classes) {
@@ -161,7 +186,8 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
     if (r.status != "ok")
       md << "- " << r.shape << ", " << r.method << ": " << r.status << '\n', ++failures;
   if (failures == 0) md << "none\n";
-  md << "\n### Retrieval: nearest-neighbour accuracy\n\n" << csv_table(runs, "retrieval.csv");
+  md << "\n### Retrieval: NN, first and second tier, E-measure (32), DCG (docs/evaluation.md)\n\n"
+     << retrieval_table(runs);
   md << "\n### Pose invariance: mean aligned vertex distance / sqrt(area) between poses\n\n"
      << pose_table(runs, false);
   md << "\n### Pose invariance: canonical / raw distance of each pair of poses, mean (largest)\n\n"
@@ -189,6 +215,21 @@ void write_cdf_plots(const std::vector<ReportRun>& runs, const std::string& dir)
     }
     if (series.empty()) continue;
     write_png(dir + "/cdf_" + kMetricNames[k] + ".png", plot_cdf(series, kMetricNames[k]));
+  }
+}
+
+void write_precision_recall_plots(const std::vector<ReportRun>& runs, const std::string& dir) {
+  const std::vector<RetrievalRow> rows = retrieval_rows(runs);
+  std::vector<std::string> frameworks;
+  for (const auto& r : rows)
+    if (std::find(frameworks.begin(), frameworks.end(), r.framework) == frameworks.end())
+      frameworks.push_back(r.framework);
+  for (const auto& f : frameworks) {
+    std::vector<PrecisionRecallSeries> series;
+    for (const auto& r : rows)
+      if (r.framework == f) series.push_back({r.method, r.precision});
+    write_png(dir + "/pr_" + f + ".png",
+              plot_precision_recall(series, "precision (" + f + " retrieval)"));
   }
 }
 

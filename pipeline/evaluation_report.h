@@ -1,6 +1,7 @@
 // Reports from batch runs (pipeline/batch_run.h): the per-class table of mean
 // metrics like the paper's Table 1, retrieval (Table 3) and pose invariance
-// tables in Markdown, and CDF plots of E_rig, E_str, E_geo like Fig. 6.
+// tables in Markdown, CDF plots of E_rig, E_str, E_geo like Fig. 6, and
+// precision-recall plots of retrieval.
 #pragma once
 
 #include <string>
@@ -19,7 +20,8 @@ struct ReportRun {
 
 /// The Markdown report: for each of E_rig, E_str, E_geo a table of means over
 /// the ok rows (classes x methods, with a row over all shapes), the failures,
-/// then retrieval.csv and pose_invariance.csv of each run as tables.
+/// the retrieval measures of retrieval.csv (a row per framework and measure, a
+/// column per method, like the paper's Table 3) and pose_invariance.csv.
 /// @throws InputError for a missing or malformed results.csv
 std::string evaluation_report_markdown(const std::vector<ReportRun>& runs);
 
@@ -27,5 +29,10 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs);
 /// the distribution of the metric over the ok shapes.
 /// @throws InputError as above, OutputError when writing fails
 void write_cdf_plots(const std::vector<ReportRun>& runs, const std::string& dir);
+
+/// Writes pr_<framework>.png into dir for each retrieval framework in the runs'
+/// retrieval.csv: the precision-recall curve of each method.
+/// @throws OutputError when writing fails
+void write_precision_recall_plots(const std::vector<ReportRun>& runs, const std::string& dir);
 
 }  // namespace unfold

@@ -56,4 +56,18 @@ PlotAxes draw_plot_axes(int x0, int y0, int x1, int y1, double xmin, double xmax
   return a;
 }
 
+Rgb series_color(size_t k) {
+  static const Rgb colors[] = {{31, 119, 180}, {214, 39, 40},   {44, 160, 44},
+                               {255, 127, 14}, {148, 103, 189}, {140, 86, 75}};
+  return colors[k % (sizeof colors / sizeof colors[0])];
+}
+
+void draw_legend(const std::vector<std::string>& names, int right, int top, Image* image) {
+  for (size_t s = 0; s < names.size(); ++s) {
+    const int y = top + 8 + 14 * int(s);
+    fill_rect(right - 150, y + 2, right - 136, y + 6, series_color(s), image);
+    draw_text(names[s], right - 130, y, kInk, 1, image);
+  }
+}
+
 }  // namespace unfold

@@ -30,4 +30,11 @@ std::string tick_label(double x);
 PlotAxes draw_plot_axes(int x0, int y0, int x1, int y1, double xmin, double xmax, double ymin,
                         double ymax, const std::string& title, bool integer_x, Image* image);
 
+/// The colour of the k-th series of a plot (cycling through six).
+Rgb series_color(size_t k);
+
+/// A legend in the top right of a plot whose right edge is `right` and top
+/// edge `top`: a colour swatch and the name of each series.
+void draw_legend(const std::vector<std::string>& names, int right, int top, Image* image);
+
 }  // namespace unfold

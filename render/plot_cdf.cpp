@@ -28,11 +28,9 @@ Image plot_cdf(const std::vector<CdfSeries>& series, const std::string& xlabel, 
   const int left = 60, right = width - 20, top = 36, bottom = height - 44;
   const PlotAxes a = draw_plot_axes(left, top, right, bottom, 0, xmax * 1.02, 0, 1,
                                     "cumulative fraction of shapes", false, &image);
-  static const Rgb colors[] = {{31, 119, 180}, {214, 39, 40},   {44, 160, 44},
-                               {255, 127, 14}, {148, 103, 189}, {140, 86, 75}};
   const Rgb ink{40, 40, 40};
   for (size_t s = 0; s < series.size(); ++s) {
-    const Rgb color = colors[s % (sizeof colors / sizeof colors[0])];
+    const Rgb color = series_color(s);
     std::vector<double> v = series[s].second;
     std::sort(v.begin(), v.end());
     double x = 0, y = 0;
@@ -44,10 +42,10 @@ Image plot_cdf(const std::vector<CdfSeries>& series, const std::string& xlabel, 
       y = next_y;
     }
     draw_line(a.px(x), a.py(y), a.x1, a.py(y), color, 2, &image);
-    const int ly = top + 8 + 14 * int(s);
-    fill_rect(right - 150, ly + 2, right - 136, ly + 6, color, &image);
-    draw_text(series[s].first, right - 130, ly, ink, 1, &image);
   }
+  std::vector<std::string> names;
+  for (const auto& s : series) names.push_back(s.first);
+  draw_legend(names, right, top, &image);
   draw_text(xlabel, (left + right - text_size(xlabel, 1).first) / 2, height - 18, ink, 1, &image);
   return image;
 }

@@ -10,10 +10,14 @@
 #include "core/errors.h"
 #include "mesh/write_surface_mesh.h"
 #include "metrics/pose_invariance.h"
+#include "metrics/retrieval_measures.h"
 #include "metrics/shape_retrieval.h"
+#include "output_checks.h"
 #include "pipeline/batch_run.h"
 #include "pipeline/evaluation_report.h"
+#include "render/plot_axes.h"
 #include "render/plot_cdf.h"
+#include "render/plot_precision_recall.h"
 #include "shapes/articulated_shape.h"
 #include "test_files.h"
 #include "test_meshes.h"
@@ -39,8 +43,10 @@ TEST(Retrieval, AMovedScaledCopyMatchesItselfAndIsItsNearestNeighbour) {
   const Eigen::MatrixXd D = dissimilarity_matrix(samples, options);
   EXPECT_LT(D(0, 1), 1e-9);
   EXPECT_EQ(D, D.transpose());
-  // Shapes 0 and 1 find each other; the ellipsoid's nearest is of the other class.
-  EXPECT_DOUBLE_EQ(nearest_neighbor_accuracy(D, {"a", "a", "b"}), 2.0 / 3.0);
+  // Shapes 0 and 1 find each other; the ellipsoid, alone in its class, is no query.
+  const RetrievalMeasures m = retrieval_measures(D, {"a", "a", "b"});
+  EXPECT_EQ(m.queries, 2);
+  EXPECT_DOUBLE_EQ(m.nn, 1);
 }
 
 TEST(Retrieval, NearestPointDistanceIsSymmetricAndZeroOnlyForTheSameSet) {
@@ -113,11 +119,18 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   std::stringstream r, p;
   r << retrieval.rdbuf();
   p << pose.rdbuf();
-  EXPECT_EQ(r.str().rfind("method,nn_accuracy\nraw,", 0), 0u) << r.str();
-  EXPECT_NE(r.str().find("\nlsmds,"), std::string::npos) << r.str();
+  EXPECT_EQ(r.str().rfind("method,framework,queries,nn,first_tier,second_tier,e_measure,dcg,"
+                          "precision_0.05,",
+                          0),
+            0u)
+      << r.str();
+  EXPECT_NE(r.str().find("\nraw,icp,2,"), std::string::npos) << r.str();
+  EXPECT_NE(r.str().find("\nlsmds,ort,2,"), std::string::npos) << r.str();
   EXPECT_NE(p.str().find("body,raw,"), std::string::npos) << p.str();
   EXPECT_NE(p.str().find("body,default,"), std::string::npos) << p.str();
   EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default.csv"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default_ort.csv"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/descriptors/raw/body0.txt"));
   // One pair of poses: its row, with the ratio of canonical to raw distance.
   std::ifstream pairs_file(out + "/pose_pairs.csv");
   std::string header, raw_row;
@@ -129,6 +142,49 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
       << "raw poses have ratio 1, shared vertex order: " << raw_row;
   for (const char* method : {"raw", "default", "lsmds"})
     EXPECT_TRUE(std::filesystem::exists(out + "/poses_body_" + method + ".png")) << method;
+}
+
+// Shards unfold their shapes, then (once every shape is done) compute their
+// rows of each similarity matrix; the collecting run assembles the blocks and
+// writes the same tables as one run.
+TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
+  test::TempDir dir;
+  const std::string in = dir.file("in");
+  std::filesystem::create_directories(in);
+  for (int k = 0; k < 4; ++k)
+    write_surface_mesh(in + "/" + (k < 2 ? "a" : "b") + std::to_string(k % 2) + ".off",
+                       make_articulated_shape(ShapePose::preset(k % 3), k < 2 ? 24 : 16));
+  auto batch = [&](const std::string& out, const std::string& extra) {
+    const std::string command =
+        std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in + " --output_dir " +
+        dir.file(out) + " --configs " + UNFOLD_SOURCE_DIR + "/configs/default.yaml --jobs 1 " +
+        "--retrieval_points 150 " + extra + " >> " + dir.file("log") + " 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(batch("single", ""), 0);
+  for (int pass = 0; pass < 2; ++pass)
+    for (const char* shard : {"0/2", "1/2"})
+      ASSERT_EQ(batch("split", std::string("--skip_existing --shard ") + shard), 0);
+  const std::string blocks = dir.file("split/similarity_blocks/");
+  for (const char* matrix : {"raw_icp", "raw_ort", "default_icp", "default_ort"})
+    for (const char* block : {".0-of-2.csv", ".1-of-2.csv"})
+      EXPECT_TRUE(std::filesystem::exists(blocks + matrix + block)) << matrix << block;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("split/retrieval.csv")));
+  ASSERT_EQ(batch("split", "--skip_existing"), 0);
+  for (const char* table : {"retrieval.csv", "similarity_raw.csv", "similarity_raw_ort.csv",
+                            "similarity_default.csv", "similarity_default_ort.csv"})
+    EXPECT_EQ(test::file_text(dir.file("split/") + table),
+              test::file_text(dir.file("single/") + table))
+        << table;
+  // The collecting run took the rows from the blocks: a changed value shows.
+  std::string block = test::file_text(blocks + "raw_icp.0-of-2.csv");
+  const size_t row = block.find("\na0,,");
+  ASSERT_NE(row, std::string::npos) << block;
+  block.replace(row, block.find('\n', row + 1) - row, "\na0,,123,123,123");
+  test::write_bytes(blocks + "raw_icp.0-of-2.csv", block);
+  ASSERT_EQ(batch("split", "--skip_existing"), 0);
+  EXPECT_NE(test::file_text(dir.file("split/similarity_raw.csv")).find("\na0,0,123,123,123\n"),
+            std::string::npos);
 }
 
 }  // namespace
@@ -144,7 +200,15 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
                      {"cat1", "cat", "default", 0.7, 0.3, 0.4, 1.0, "ok"},
                      {"cat0", "cat", "lsmds", 3.0, 0.2, 0.05, 2.0, "ok"},
                      {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}});
-  test::write_bytes(dir.file("retrieval.csv"), "method,nn_accuracy\nraw,0.5\ndefault,1\n");
+  std::string precision = "", header =
+                                  "method,framework,queries,nn,first_tier,second_tier,"
+                                  "e_measure,dcg";
+  for (int k = 1; k <= kRecallLevels; ++k)
+    header += ",precision_" + std::to_string(k), precision += k < 10 ? ",1" : ",0.5";
+  test::write_bytes(dir.file("retrieval.csv"), header + "\nraw,icp,2,0.5,0.5,1,0.1,0.75" +
+                                                   precision + "\ndefault,icp,2,1,1,1,0.2,1" +
+                                                   precision + "\ndefault,ort,2,1,0.5,1,0.2,1" +
+                                                   precision + "\n");
   test::write_bytes(dir.file("pose_invariance.csv"),
                     "class,method,pose_distance,mean_ratio,max_ratio,pairs,correspondence\n"
                     "cat,raw,0.2,1,1,1,vts\ncat,default,0.1,0.5,0.75,1,vts\n"
@@ -153,7 +217,10 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   const std::string md = evaluation_report_markdown({{dir_path, "2k"}});
   EXPECT_NE(md.find("| cat | 0.6000 (2/2) | 3.0000 (1/2) |"), std::string::npos) << md;
   EXPECT_NE(md.find("cat1, lsmds@2k: no, it failed"), std::string::npos) << md;
-  EXPECT_NE(md.find("| default@2k | 1.0000 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| framework | measure | raw@2k | default@2k |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| icp | NN | 0.500 | 1.000 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| icp | DCG | 0.750 | 1.000 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| ort | FT | - | 0.500 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| cat | 0.2000 | 0.1000 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| cat | 0.500 (max 0.750) |"), std::string::npos) << md;
   // A class without correspondence (docs/evaluation.md): said, not a number.
@@ -161,20 +228,38 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   EXPECT_NE(md.find("| dog | no correspondence |\n"), std::string::npos) << md;
   write_cdf_plots({{dir_path, ""}}, dir_path);
   EXPECT_TRUE(std::filesystem::exists(dir.file("cdf_E_rig.png")));
+  write_precision_recall_plots({{dir_path, ""}}, dir_path);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("pr_icp.png")));
+  EXPECT_TRUE(std::filesystem::exists(dir.file("pr_ort.png")));
+}
+
+// Pixels of the first two series' colours.
+std::pair<int, int> series_pixels(const Image& image) {
+  int first = 0, second = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      first += image.at(x, y) == series_color(0);
+      second += image.at(x, y) == series_color(1);
+    }
+  return {first, second};
 }
 
 TEST(Report, CdfPlotDrawsEachSeriesAndRefusesEmptyOnes) {
-  const Image image = plot_cdf({{"a", {0.1, 0.5, 0.9}}, {"b", {0.3}}}, "x");
-  int blue = 0, red = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      blue += image.at(x, y) == Rgb{31, 119, 180};
-      red += image.at(x, y) == Rgb{214, 39, 40};
-    }
+  const auto [blue, red] = series_pixels(plot_cdf({{"a", {0.1, 0.5, 0.9}}, {"b", {0.3}}}, "x"));
   EXPECT_GT(blue, 100);
   EXPECT_GT(red, 100);
   EXPECT_THROW(plot_cdf({{"a", {}}}, "x"), UsageError);
   EXPECT_THROW(plot_cdf({}, "x"), UsageError);
+}
+
+TEST(Report, PrecisionRecallPlotDrawsEachSeriesAndRefusesBadOnes) {
+  const auto [blue, red] =
+      series_pixels(plot_precision_recall({{"a", {1, 0.8, 0.5}}, {"b", {0.5, 0.5, 0.2}}}, "P"));
+  EXPECT_GT(blue, 100);
+  EXPECT_GT(red, 100);
+  EXPECT_THROW(plot_precision_recall({{"a", {0.5}}}, "P"), UsageError);
+  EXPECT_THROW(plot_precision_recall({{"a", {0.5, 1.5}}}, "P"), UsageError);
+  EXPECT_THROW(plot_precision_recall({}, "P"), UsageError);
 }
 
 }  // namespace

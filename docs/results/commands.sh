@@ -19,6 +19,9 @@ build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" \
   --configs configs/paper.yaml,configs/surface.yaml,configs/invariant.yaml --jobs 2
 
+# The report: Table 1-style means, the retrieval measures (NN, FT, ST, E, DCG per
+# framework, icp and ort, like Table 3), cdf_*.png and the precision-recall
+# curves pr_icp.png, pr_ort.png.
 build/bin/unfold_report --runs "$OUT/2k,$OUT/full" --labels 2k,full \
   --markdown docs/results/report.md --plots_dir docs/results
 cp "$OUT"/2k/results.csv docs/results/results_2k.csv

@@ -1,8 +1,12 @@
+#include <pybind11/stl.h>
+
 #include "arrays.h"
 #include "functions.h"
 #include "mesh/edge_graph.h"
 #include "metrics/geodesic_error.h"
+#include "metrics/ort_dissimilarity.h"
 #include "metrics/pose_invariance.h"
+#include "metrics/retrieval_measures.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/shape_retrieval.h"
 #include "metrics/stretch_error.h"
@@ -66,6 +70,35 @@ void def_metric_functions(py::module_& m) {
       },
       py::arg("A"), py::arg("B"), py::arg("sample_points") = RetrievalOptions().sample_points,
       py::arg("icp_iterations") = RetrievalOptions().icp_iterations, release());
+  m.def(
+      "ort_distance",
+      [](const Vertices& A, const Elements& FA, const Vertices& B, const Elements& FB,
+         int sample_points, int icp_iterations) {
+        const SurfaceMesh a = make_surface(A, FA), b = make_surface(B, FB);
+        return ort_dissimilarity(ort_sample(a.V, triangulate_faces(a), sample_points),
+                                 ort_sample(b.V, triangulate_faces(b), sample_points),
+                                 icp_iterations);
+      },
+      py::arg("A"), py::arg("FA"), py::arg("B"), py::arg("FB"),
+      py::arg("sample_points") = RetrievalOptions().sample_points,
+      py::arg("icp_iterations") = RetrievalOptions().icp_iterations, release());
+  m.def(
+      "retrieval_measures",
+      [](const Eigen::MatrixXd& D, const std::vector<std::string>& classes) {
+        RetrievalMeasures r;
+        {
+          py::gil_scoped_release unlocked;
+          r = retrieval_measures(D, classes);
+        }
+        std::vector<double> recall;
+        for (int k = 1; k <= kRecallLevels; ++k) recall.push_back(double(k) / kRecallLevels);
+        py::dict d;
+        d["nn"] = r.nn, d["first_tier"] = r.first_tier, d["second_tier"] = r.second_tier;
+        d["e_measure"] = r.e_measure, d["dcg"] = r.dcg, d["queries"] = r.queries;
+        d["recall"] = recall, d["precision"] = r.precision;
+        return d;
+      },
+      py::arg("D"), py::arg("classes"));
 }
 
 }  // namespace unfold::python

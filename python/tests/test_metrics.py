@@ -108,3 +108,29 @@ def test_read_vts_and_pose_distance_on_correspondences(tmp_path):
         unfold.read_vts(tmp_path / "r.vts", 10)
     with pytest.raises(unfold.InputError, match="expected 3"):
         unfold.read_vts(tmp_path / "r.vts", len(R), rows=3)
+
+
+def test_retrieval_measures_of_a_hand_made_matrix():
+    # Classes a a a b b; the ranked lists and values worked out in
+    # tests/retrieval_test.cpp (HandMadeMatrixGivesTheHandComputedValues).
+    D = [[0, 3, 1, 2, 4], [3, 0, 5, 1, 6], [1, 5, 0, 7, 8], [2, 1, 7, 0, 9], [4, 6, 8, 9, 0]]
+    m = metrics.retrieval_measures(D, ["a", "a", "a", "b", "b"])
+    assert m["queries"] == 5
+    assert m["nn"] == pytest.approx(0.4)
+    assert m["first_tier"] == pytest.approx(0.4)
+    assert m["second_tier"] == pytest.approx(0.6)
+    assert len(m["recall"]) == len(m["precision"]) == 20
+    assert m["recall"][-1] == 1
+    assert m["precision"][-1] == pytest.approx((2 / 3 + 2 / 3 + 1 + 0.25 + 0.25) / 5)
+    with pytest.raises(unfold.InputError, match="square"):
+        metrics.retrieval_measures([[0, 1]], ["a"])
+    with pytest.raises(unfold.ConfigError, match="no class has two shapes"):
+        metrics.retrieval_measures(D, ["a", "b", "c", "d", "e"])
+
+
+def test_ort_distance_is_invariant_to_a_rigid_motion_and_a_scale(demo):
+    V, F = demo
+    moved = 2.5 * V @ rotation(0.4).T - 1.0
+    assert metrics.ort_distance(V, F, moved, F, sample_points=300) == pytest.approx(0, abs=1e-9)
+    other, G = unfold.demo_shape("2", resolution=40)
+    assert metrics.ort_distance(V, F, other, G, sample_points=300) > 1e-4

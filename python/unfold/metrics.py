@@ -2,13 +2,16 @@
 
 The same functions that fill Result.metrics and the batch reports:
 E_rig (Eq. 8), E_str (Eq. 9), E_geo (Eq. 10), pose distance (two canonical
-forms of one shape) and retrieval distance (two shapes' canonical forms).
+forms of one shape), retrieval distances (two shapes' canonical forms: ICP and
+ORT) and the retrieval measures of a dissimilarity matrix (NN, FT, ST, E, DCG,
+precision-recall), as retrieval.csv reports them.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+import numpy as np
 import numpy.typing as npt
 
 from . import _arrays, _core
@@ -92,3 +95,27 @@ def retrieval_distance(A: npt.ArrayLike, B: npt.ArrayLike, sample_points: int | 
     return _core.retrieval_distance(_arrays.vertices(A, "A"), _arrays.vertices(B, "B"),
                                     **_set(sample_points=sample_points,
                                            icp_iterations=icp_iterations))
+
+
+def ort_distance(A: npt.ArrayLike, FA: npt.ArrayLike, B: npt.ArrayLike, FB: npt.ArrayLike,
+                 sample_points: int | None = None, icp_iterations: int | None = None) -> float:
+    """ORT dissimilarity of two surfaces (rows need not correspond), as in the
+    retrieval tables: each centred, scaled to unit area and oriented by PCA or
+    rectilinearity; then the mean squared nearest-vertex error after the best
+    cube rotation and ICP."""
+    A, FA = _arrays.surface(A, FA)
+    B, FB = _arrays.surface(B, FB)
+    return _core.ort_distance(A, FA, B, FB, **_set(sample_points=sample_points,
+                                                    icp_iterations=icp_iterations))
+
+
+def retrieval_measures(D: npt.ArrayLike, classes: list[str]) -> dict[str, Any]:
+    """The retrieval measures of a dissimilarity matrix D (n, n; smaller = more
+    similar) with a class per shape, each query leaving itself out: nn,
+    first_tier, second_tier, e_measure (first 32), dcg (normalised), queries,
+    and the interpolated precision at recall 0.05, ..., 1 ("recall",
+    "precision"); docs/evaluation.md gives the formulas."""
+    matrix = np.asarray(D, dtype=np.float64)
+    if matrix.ndim != 2 or matrix.shape[0] != matrix.shape[1]:
+        raise _core.InputError(f"D must be a square matrix, got shape {matrix.shape}")
+    return _core.retrieval_measures(np.ascontiguousarray(matrix), [str(c) for c in classes])

@@ -1,0 +1,46 @@
+// ORT retrieval (the paper's Table 3, after Pickup et al.'s canonical-form
+// benchmarks): each shape is normalised (centred at its area centroid, scaled
+// to unit surface area, oriented by PCA or by rectilinearity), and two shapes'
+// dissimilarity is the mean squared vertex error after the optimal rigid
+// transformation. Shapes of different classes share no vertex order, so the
+// error pairs each vertex with the nearest vertex of the other shape
+// (symmetrically); the transformation is the best of the 24 rotations of a
+// cube (the orientation's remaining ambiguity), refined by ICP.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace unfold {
+
+/// The orientation of the normalised mesh: its principal axes (area-weighted
+/// second moments, largest first) or its rectilinearity orientation
+/// (metrics/rectilinearity.h), whichever gives the axis-aligned bounding box
+/// of smaller volume (our choice between the two: the tighter frame).
+/// @return R with det +1; the oriented points are the rows of V R^T
+/// @pre V centred at the area centroid
+Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
+/// The ORT sample: the mesh centred at its area centroid, scaled to unit
+/// surface area and oriented by ort_orientation, then every
+/// ceil(n / sample_points)-th vertex.
+/// @throws UsageError for fewer than 4 vertices, sample_points < 4 or zero area
+Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                            int sample_points);
+
+/// The 24 rotations of a cube (signed permutation matrices with det +1): the
+/// ambiguity left by ort_orientation.
+std::vector<Eigen::Matrix3d> cube_rotations();
+
+/// The symmetric mean squared nearest-point distance,
+/// (mean_a min_b |a - b|^2 + mean_b min_a |a - b|^2) / 2.
+/// @throws UsageError for an empty set
+double mean_squared_point_error(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B);
+
+/// ORT dissimilarity of two ORT samples: the smallest mean_squared_point_error
+/// of A and B under the 24 cube rotations (scored on at most 200 points of
+/// each), then after `icp_iterations` of ICP from the best.
+/// @throws UsageError for an empty set
+double ort_dissimilarity(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B, int icp_iterations);
+
+}  // namespace unfold

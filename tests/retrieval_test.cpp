@@ -1,0 +1,207 @@
+// Retrieval: the benchmark measures on a hand-made matrix whose values are
+// worked out by hand; rectilinearity and the ORT normalisation invariant to a
+// rigid motion and a scale; the ORT dissimilarity's value on a hand-made pair;
+// similarity blocks that assemble to the matrix computed in one go; the
+// descriptors' exact round trip.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/errors.h"
+#include "metrics/ort_dissimilarity.h"
+#include "metrics/pose_invariance.h"
+#include "metrics/rectilinearity.h"
+#include "metrics/retrieval_measures.h"
+#include "pipeline/similarity_blocks.h"
+#include "shapes/articulated_shape.h"
+#include "test_files.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+// Shapes 0, 1, 2 of class a, 3 and 4 of class b. Ranked lists (query left out):
+//   0: 2a 3b 1a 4b    1: 3b 0a 2a 4b    2: 0a 1a 3b 4b
+//   3: 1a 0a 2a 4b    4: 0a 1a 2a 3b
+Eigen::MatrixXd hand_made_matrix() {
+  Eigen::MatrixXd D(5, 5);
+  D << 0, 3, 1, 2, 4,  //
+      3, 0, 5, 1, 6,   //
+      1, 5, 0, 7, 8,   //
+      2, 1, 7, 0, 9,   //
+      4, 6, 8, 9, 0;
+  return D;
+}
+
+TEST(RetrievalMeasures, HandMadeMatrixGivesTheHandComputedValues) {
+  const RetrievalMeasures m = retrieval_measures(hand_made_matrix(), {"a", "a", "a", "b", "b"});
+  EXPECT_EQ(m.queries, 5);
+  // Per query NN: 1 0 1 0 0; FT (R = 2, 2, 2, 1, 1): 1/2 1/2 1 0 0; ST: 1 1 1 0 0.
+  EXPECT_DOUBLE_EQ(m.nn, 2.0 / 5);
+  EXPECT_DOUBLE_EQ(m.first_tier, 2.0 / 5);
+  EXPECT_DOUBLE_EQ(m.second_tier, 3.0 / 5);
+  // E over 32 retrieved: class a finds 2 of 2 (P = 2/32, R = 1), class b 1 of 1.
+  const double e_a = 2 * (2.0 / 32) / (2.0 / 32 + 1), e_b = 2 * (1.0 / 32) / (1.0 / 32 + 1);
+  EXPECT_DOUBLE_EQ(m.e_measure, (3 * e_a + 2 * e_b) / 5);
+  // DCG / ideal: queries 0 and 1 have relevant at ranks 1, 3 and 2, 3; query 2 is
+  // ideal; queries 3 and 4 find their one relevant at rank 4 (1 / log2 4).
+  const double dcg0 = (1 + 1 / std::log2(3.0)) / 2, dcg1 = (1 + 1 / std::log2(3.0)) / 2;
+  EXPECT_NEAR(m.dcg, (dcg0 + dcg1 + 1 + 0.5 + 0.5) / 5, 1e-15);
+  // Interpolated precision: query 0: 1 up to recall 1/2, then 2/3; query 1: 2/3;
+  // query 2: 1; queries 3, 4: 1/4.
+  ASSERT_EQ(m.precision.size(), size_t(kRecallLevels));
+  EXPECT_NEAR(m.precision[0], (1 + 2.0 / 3 + 1 + 0.25 + 0.25) / 5, 1e-15);
+  EXPECT_NEAR(m.precision[9], (1 + 2.0 / 3 + 1 + 0.25 + 0.25) / 5, 1e-15);  // recall 0.5
+  EXPECT_NEAR(m.precision[10], (2.0 / 3 + 2.0 / 3 + 1 + 0.25 + 0.25) / 5, 1e-15);
+  EXPECT_NEAR(m.precision[19], (2.0 / 3 + 2.0 / 3 + 1 + 0.25 + 0.25) / 5, 1e-15);
+}
+
+TEST(RetrievalMeasures, ASingletonClassIsNoQueryAndBadInputsThrow) {
+  // A sixth shape alone in its class, far from all: the last of every list,
+  // irrelevant to every query, so nothing changes.
+  Eigen::MatrixXd D = Eigen::MatrixXd::Constant(6, 6, 100);
+  D.topLeftCorner(5, 5) = hand_made_matrix();
+  D(5, 5) = 0;
+  const RetrievalMeasures with = retrieval_measures(D, {"a", "a", "a", "b", "b", "c"});
+  const RetrievalMeasures without =
+      retrieval_measures(hand_made_matrix(), {"a", "a", "a", "b", "b"});
+  EXPECT_EQ(with.queries, 5);
+  EXPECT_DOUBLE_EQ(with.nn, without.nn);
+  EXPECT_DOUBLE_EQ(with.dcg, without.dcg);
+  EXPECT_DOUBLE_EQ(with.e_measure, without.e_measure);
+  EXPECT_EQ(with.precision, without.precision);
+  EXPECT_THROW(retrieval_measures(hand_made_matrix(), {"a", "b", "c", "d", "e"}), UsageError);
+  EXPECT_THROW(retrieval_measures(hand_made_matrix(), {"a", "a"}), UsageError);
+  Eigen::MatrixXd nan = hand_made_matrix();
+  nan(0, 1) = std::nan("");
+  EXPECT_THROW(retrieval_measures(nan, {"a", "a", "a", "b", "b"}), UsageError);
+}
+
+TEST(Rectilinearity, ARotatedBoxIsFoundAxisAlignedAndASphereIsNot) {
+  SurfaceMesh box = test::cube();
+  box.V.col(0) *= 3;
+  box.V.col(1) *= 2;
+  const Eigen::MatrixX3i F = triangulate_faces(box);
+  const Eigen::Matrix3d turn = test::random_rotation(3);
+  const Eigen::MatrixX3d turned = box.V * turn.transpose();
+  EXPECT_NEAR(rectilinearity(box.V, F, Eigen::Matrix3d::Identity()), 1, 1e-12);
+  EXPECT_LT(rectilinearity(turned, F, Eigen::Matrix3d::Identity()), 0.9);
+  EXPECT_NEAR(rectilinearity(turned, F, rectilinearity_orientation(turned, F)), 1, 1e-6);
+  const SurfaceMesh sphere = test::uv_sphere(24, 32);
+  const Eigen::MatrixX3i G = triangulate_faces(sphere);
+  EXPECT_LT(rectilinearity(sphere.V, G, rectilinearity_orientation(sphere.V, G)), 0.3);
+  EXPECT_THROW(rectilinearity(Eigen::MatrixX3d::Zero(3, 3), Eigen::MatrixX3i(F.topRows(1)),
+                              Eigen::Matrix3d::Identity()),
+               UsageError);
+}
+
+TEST(Ort, TheNormalisedSampleIsInvariantToARigidMotionAndAScale) {
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 24);
+  const Eigen::MatrixX3i F = triangulate_faces(shape);
+  const Eigen::MatrixX3d moved =
+      ((4.2 * shape.V) * test::random_rotation(11).transpose()).rowwise() +
+      Eigen::RowVector3d(-2, 5, 1);
+  const Eigen::MatrixX3d a = ort_sample(shape.V, F, 500), b = ort_sample(moved, F, 500);
+  ASSERT_EQ(a.rows(), b.rows());
+  // The same points, up to the orientation's cube ambiguity.
+  double closest = INFINITY;
+  for (const Eigen::Matrix3d& R : cube_rotations())
+    closest = std::min(closest, (a * R.transpose() - b).cwiseAbs().maxCoeff());
+  EXPECT_LT(closest, 1e-6);
+  EXPECT_LT(ort_dissimilarity(a, b, 20), 1e-12);
+  // Every vertex kept (in order): unit area, area centroid at the origin.
+  const Eigen::MatrixX3d all = ort_sample(moved, F, int(shape.V.rows()));
+  EXPECT_NEAR(surface_area(all, F), 1, 1e-12);
+  Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const Eigen::RowVector3d p = all.row(F(f, 0)), q = all.row(F(f, 1)), r = all.row(F(f, 2));
+    centroid += 0.5 * (q - p).cross(r - p).norm() * (p + q + r) / 3;
+  }
+  EXPECT_LT(centroid.norm(), 1e-12);
+  EXPECT_THROW(ort_sample(shape.V, F, 3), UsageError);
+}
+
+TEST(Ort, HandMadePairHasItsKnownMeanSquaredError) {
+  // The six axis points and the same at twice the size: every point is 1 from
+  // its nearest, in every rotation of the cube and after ICP (the matched pairs
+  // are already best aligned).
+  Eigen::MatrixX3d A(6, 3);
+  A << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
+  EXPECT_DOUBLE_EQ(mean_squared_point_error(A, 2 * A), 1);
+  EXPECT_DOUBLE_EQ(ort_dissimilarity(A, 2 * A, 20), 1);
+  // A box's corners against the same box turned a quarter about z: the cube
+  // rotation undoes it exactly.
+  Eigen::MatrixX3d box = test::cube().V.rowwise() - Eigen::RowVector3d(0.5, 0.5, 0.5);
+  box.col(0) *= 3;
+  const Eigen::Matrix3d quarter = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).matrix();
+  EXPECT_GT(mean_squared_point_error(box, box * quarter.transpose()), 1);
+  EXPECT_NEAR(ort_dissimilarity(box, box * quarter.transpose(), 20), 0, 1e-24);
+  // One corner moved by 0.5: squared error 0.25 from each side over 8 points.
+  Eigen::MatrixX3d bumped = box;
+  bumped(0, 2) -= 0.5;
+  EXPECT_DOUBLE_EQ(mean_squared_point_error(box, bumped), 0.25 / 8);
+  EXPECT_THROW(ort_dissimilarity(A, Eigen::MatrixX3d(0, 3), 20), UsageError);
+}
+
+TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
+  std::vector<RetrievalDescriptor> d;
+  std::vector<std::string> names;
+  const RetrievalOptions options{100, 5};
+  for (int k = 0; k < 5; ++k) {
+    const SurfaceMesh s = make_articulated_shape(ShapePose::preset(k % 3), 16);
+    d.push_back(retrieval_descriptor({s.V * (1 + 0.1 * k), s.faces}, options));
+    names.push_back("s" + std::to_string(k));
+  }
+  const test::TempDir dir;
+  const std::string blocks = dir.file("blocks");
+  std::filesystem::create_directories(blocks);
+  for (const RetrievalFramework f : kRetrievalFrameworks) {
+    SCOPED_TRACE(framework_name(f));
+    const Eigen::MatrixXd one_go = assemble_similarity(d, names, f, blocks, "none", options);
+    EXPECT_EQ(one_go, one_go.transpose());
+    EXPECT_EQ(one_go.diagonal(), Eigen::VectorXd::Zero(5));
+    for (int i = 0; i < 3; ++i)
+      write_similarity_block(
+          blocks + "/m_" + std::string(framework_name(f)) + "." + std::to_string(i) + "-of-3.csv",
+          similarity_block(d, f, i, 3, options), names, i, 3, options);
+    Eigen::MatrixXd read = Eigen::MatrixXd::Constant(5, 5, NAN);
+    int rows = 0;
+    for (int i = 0; i < 3; ++i)
+      rows += read_similarity_block(
+          blocks + "/m_" + std::string(framework_name(f)) + "." + std::to_string(i) + "-of-3.csv",
+          names, options, &read);
+    EXPECT_EQ(rows, 5);
+    for (int i = 0; i < 5; ++i)
+      for (int j = i + 1; j < 5; ++j) EXPECT_EQ(read(i, j), one_go(i, j)) << i << "," << j;
+    EXPECT_EQ(
+        assemble_similarity(d, names, f, blocks, "m_" + std::string(framework_name(f)), options),
+        one_go);
+    // Another shape list or other options: the block is not used.
+    std::vector<std::string> other = names;
+    other[4] = "t";
+    EXPECT_EQ(read_similarity_block(blocks + "/m_" + std::string(framework_name(f)) + ".0-of-3.csv",
+                                    other, options, &read),
+              0);
+    EXPECT_EQ(read_similarity_block(blocks + "/m_" + std::string(framework_name(f)) + ".0-of-3.csv",
+                                    names, RetrievalOptions{100, 6}, &read),
+              0);
+  }
+}
+
+TEST(SimilarityBlocks, DescriptorsRoundTripExactly) {
+  const SurfaceMesh s = make_articulated_shape(ShapePose::preset(2), 16);
+  const RetrievalOptions options{300, 5};
+  const RetrievalDescriptor d = retrieval_descriptor(s, options);
+  const test::TempDir dir;
+  write_retrieval_descriptor(dir.file("d.txt"), d, options);
+  const auto back = read_retrieval_descriptor(dir.file("d.txt"), options);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->icp, d.icp);
+  EXPECT_EQ(back->ort, d.ort);
+  EXPECT_FALSE(read_retrieval_descriptor(dir.file("d.txt"), RetrievalOptions{301, 5}));
+  EXPECT_FALSE(read_retrieval_descriptor(dir.file("missing.txt"), options));
+}
+
+}  // namespace
+}  // namespace unfold
