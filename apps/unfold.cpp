@@ -14,6 +14,7 @@
 #include "core/atomic_file.h"
 #include "core/output_transaction.h"
 #include "mesh/read_surface_mesh.h"
+#include "mesh/write_polyline.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
 #include "pipeline/beta_sweep.h"
@@ -35,6 +36,10 @@ DEFINE_string(output, "",
               "canonical surface (.off .obj .ply .stl): the input's vertices and faces");
 DEFINE_string(input_copy, "", "also write the surface that was unfolded (e.g. the demo shape)");
 DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (TetGen .node/.ele)");
+DEFINE_string(skeleton_output, "",
+              "method scf: the input's curve skeleton as line segments (.vtk or .ply)");
+DEFINE_string(canonical_skeleton_output, "",
+              "method scf: the straightened skeleton, placed like --output (.vtk or .ply)");
 DEFINE_string(metrics_json, "", "metrics, timings and the per-iteration history as JSON");
 DEFINE_string(render, "",
               "before/after picture (.png): side and top views of the input and the canonical "
@@ -74,11 +79,18 @@ int run() {
   for (const std::string& path : {FLAGS_output, FLAGS_input_copy})
     if (!path.empty()) unfold::check_surface_mesh_format(path);
   unfold::check_tet_mesh_format(FLAGS_tet_output);
+  for (const std::string& path : {FLAGS_skeleton_output, FLAGS_canonical_skeleton_output}) {
+    if (path.empty()) continue;
+    if (options.method != "scf")
+      throw unfold::UsageError("--skeleton_output and --canonical_skeleton_output need method: scf");
+    unfold::check_polyline_format(path);
+  }
   unfold::check_png_format(FLAGS_render);
   unfold::check_png_format(FLAGS_convergence_png);
   for (const std::string& path :
        {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_metrics_json, FLAGS_render,
-        FLAGS_convergence, FLAGS_convergence_png})
+        FLAGS_convergence, FLAGS_convergence_png, FLAGS_skeleton_output,
+        FLAGS_canonical_skeleton_output})
     if (!path.empty()) unfold::check_writable_destination(path);
   unfold::RenderOptions render;
   render.up_axis = unfold::axis_index(FLAGS_render_up, "--render_up");
@@ -109,6 +121,11 @@ int run() {
   if (!FLAGS_tet_output.empty())
     unfold::write_tet_mesh(FLAGS_tet_output, result.tet_canonical, result.tets.T,
                            unfold::canonical_tet_fields(result));
+  if (!FLAGS_skeleton_output.empty())
+    unfold::write_polyline(FLAGS_skeleton_output, result.skeleton.nodes, result.skeleton.edges);
+  if (!FLAGS_canonical_skeleton_output.empty())
+    unfold::write_polyline(FLAGS_canonical_skeleton_output, result.skeleton_canonical,
+                           result.skeleton.edges);
   if (!FLAGS_metrics_json.empty()) unfold::write_metrics_json(FLAGS_metrics_json, result, options);
   if (!FLAGS_convergence.empty())
     unfold::write_convergence_csv(FLAGS_convergence, result.cascade.history);

@@ -116,7 +116,7 @@ def test_numerical_error_carries_the_command_lines_message():
         (None, {"cascade": {"k_itr": 1}}, "unknown config key 'cascade.k_itr'"),
         ({"cascade": {"k_iter": 0}}, {}, "config key 'cascade.k_iter' must be at least 1"),
         (None, {"k_iter": "many"}, "config key 'cascade.k_iter' must be an integer"),
-        (None, {"method": "magic"}, "must be local_global, ceres, dpmu or lsmds, got 'magic'"),
+        (None, {"method": "magic"}, "must be local_global, ceres, dpmu, lsmds or scf, got 'magic'"),
         (None, {"method": None}, "config key 'method' cannot be set to None"),
         (BAD_INPUTS / "negative_beta.yaml", {}, "beta.value"),
         (42, {}, "config must be a YAML file path or a dict"),
