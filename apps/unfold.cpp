@@ -82,7 +82,8 @@ int run() {
   for (const std::string& path : {FLAGS_skeleton_output, FLAGS_canonical_skeleton_output}) {
     if (path.empty()) continue;
     if (options.method != "scf")
-      throw unfold::UsageError("--skeleton_output and --canonical_skeleton_output need method: scf");
+      throw unfold::UsageError(
+          "--skeleton_output and --canonical_skeleton_output need method: scf");
     unfold::check_polyline_format(path);
   }
   unfold::check_png_format(FLAGS_render);
@@ -115,6 +116,11 @@ int run() {
   }
   const unfold::UnfoldResult result = unfold::unfold_surface(surface, options);
 
+  const bool wants_skeleton =
+      !FLAGS_skeleton_output.empty() || !FLAGS_canonical_skeleton_output.empty();
+  if (wants_skeleton && result.skeleton.nodes.rows() == 0)
+    throw unfold::UsageError(
+        "--skeleton_output: no single skeleton (components: separately unfolds each apart)");
   unfold::OutputTransaction outputs;  // all files or none (docs/errors.md)
   if (!FLAGS_output.empty()) unfold::write_surface_mesh(FLAGS_output, result.canonical);
   if (!FLAGS_input_copy.empty()) unfold::write_surface_mesh(FLAGS_input_copy, result.surface);

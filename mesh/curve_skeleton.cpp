@@ -2,12 +2,15 @@
 #include "mesh/curve_skeleton.h"
 
 #include <CGAL/Mean_curvature_flow_skeletonization.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <glog/logging.h>
 
 #include <cmath>
+#include <iterator>
 #include <string>
+#include <vector>
 
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
@@ -24,14 +27,31 @@ Mesh to_cgal_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
   Mesh mesh;
   for (int i = 0; i < V.rows(); ++i) mesh.add_vertex(Kernel::Point_3(V(i, 0), V(i, 1), V(i, 2)));
   for (int f = 0; f < F.rows(); ++f) {
-    const Mesh::Face_index face = mesh.add_face(Mesh::Vertex_index(F(f, 0)),
-                                                Mesh::Vertex_index(F(f, 1)),
-                                                Mesh::Vertex_index(F(f, 2)));
+    const Mesh::Face_index face = mesh.add_face(
+        Mesh::Vertex_index(F(f, 0)), Mesh::Vertex_index(F(f, 1)), Mesh::Vertex_index(F(f, 2)));
     if (face == Mesh::null_face())
       throw InputError("scf: triangle " + std::to_string(f) +
                        " makes the surface non-manifold; the skeleton needs a 2-manifold surface");
   }
   return mesh;
+}
+
+// Closes every hole with triangles between its own vertices (no vertex is
+// added, so the correspondence stays the input's): the contraction needs a
+// closed surface, and shapes such as TOSCA's cats come with small holes.
+// Returns the number of holes closed.
+int close_holes(Mesh* mesh) {
+  std::vector<Mesh::Halfedge_index> holes;
+  std::vector<bool> seen(mesh->number_of_halfedges(), false);
+  for (const Mesh::Halfedge_index h : mesh->halfedges()) {
+    if (!mesh->is_border(h) || seen[h.idx()]) continue;
+    holes.push_back(h);
+    for (Mesh::Halfedge_index g = h; !seen[g.idx()]; g = mesh->next(g)) seen[g.idx()] = true;
+  }
+  std::vector<Mesh::Face_index> added;
+  for (const Mesh::Halfedge_index h : holes)
+    CGAL::Polygon_mesh_processing::triangulate_hole(*mesh, h, std::back_inserter(added));
+  return int(holes.size());
 }
 
 }  // namespace
@@ -61,9 +81,10 @@ CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   if (components != 1)
     throw InputError("scf: the surface has " + std::to_string(components) +
                      " connected components; the skeleton needs one");
-  const Mesh mesh = to_cgal_mesh(V, F);
+  Mesh mesh = to_cgal_mesh(V, F);
+  if (const int holes = close_holes(&mesh)) LOG(INFO) << "scf: closed " << holes << " hole(s)";
   if (!CGAL::is_closed(mesh))
-    throw InputError("scf: the surface is open; the skeleton needs a closed surface");
+    throw InputError("scf: the surface is open and its holes could not be closed");
 
   const Eigen::RowVector3d centroid = V.colwise().mean();
   const double diameter = 2 * (V.rowwise() - centroid).rowwise().norm().maxCoeff();

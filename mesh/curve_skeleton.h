@@ -20,9 +20,9 @@ struct CurveSkeletonOptions {
 };
 
 struct CurveSkeleton {
-  Eigen::MatrixX3d nodes;           ///< one row per skeleton node
-  Eigen::MatrixX2i edges;           ///< bones: node index pairs, first < second
-  Eigen::VectorXi node_of_vertex;   ///< per surface vertex, the node it contracted to
+  Eigen::MatrixX3d nodes;          ///< one row per skeleton node
+  Eigen::MatrixX2i edges;          ///< bones: node index pairs, first < second
+  Eigen::VectorXi node_of_vertex;  ///< per surface vertex, the node it contracted to
 };
 
 /// Checks the option values. @throws UsageError naming the scf.* key
@@ -30,11 +30,13 @@ void validate_curve_skeleton_options(const CurveSkeletonOptions& options);
 
 /// Contracts the surface (V, F) by mean curvature flow into a curve skeleton.
 /// @param V surface vertices
-/// @param F triangles; the surface must be closed, 2-manifold and connected
-/// @throws InputError if the surface has fewer than 8 vertices, is open,
-///         non-manifold or has several components; NumericalError if the
-///         contraction yields no skeleton of at least two nodes (a thin sheet
-///         may collapse to a point or a surface) or CGAL fails
+/// @param F triangles of a 2-manifold, connected surface; its holes are closed
+///         (triangles between each hole's own vertices) before the contraction
+/// @throws InputError if the surface has fewer than 8 vertices, is
+///         non-manifold, has several components or a hole that cannot be
+///         closed; NumericalError if the contraction yields no skeleton of at
+///         least two nodes (a thin sheet may collapse to a point or a surface)
+///         or CGAL fails
 /// @throws UsageError for bad options
 CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
                              const CurveSkeletonOptions& options = {});

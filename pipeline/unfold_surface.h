@@ -51,7 +51,7 @@ struct UnfoldResult {
   bool beta_raised = false;   ///< beta_requested was below n/lambda_2 - 1 and was raised
   CascadeResult cascade;
   UnfoldMetrics metrics;
-  std::string linear_solver;  ///< the global step's solver: direct, iterative, ceres ("" for lsmds, scf)
+  std::string linear_solver;  ///< the global step's solver: direct, iterative, ceres ("" for lsmds)
   int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
   double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
   CgStats cg;                 ///< iterative: what the CG global steps did
@@ -59,8 +59,8 @@ struct UnfoldResult {
   double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
   double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
   std::vector<std::string> warnings;
-  CurveSkeleton skeleton;                ///< method scf: the rest curve skeleton (else empty)
-  Eigen::MatrixX3d skeleton_canonical;   ///< method scf: its straightened nodes, placed like canonical
+  CurveSkeleton skeleton;               ///< method scf: the input's curve skeleton, else empty
+  Eigen::MatrixX3d skeleton_canonical;  ///< method scf: its straightened nodes, placed as canonical
 };
 
 /// Checks, simplifies (options.target_vertices) and tetrahedralizes a surface.

@@ -19,19 +19,19 @@ namespace unfold {
 
 struct ScfOptions {
   CurveSkeletonOptions skeleton;
-  int mds_iterations = 300;    ///< Guttman transforms on the skeleton at most
+  int mds_iterations = 300;  ///< Guttman transforms on the skeleton at most
   /// skinning weights fall to 0 at this distance along the skeleton from a
   /// vertex's own node, in units of the surface's diameter
   double blend_radius = 0.05;
-  double arap_anchor = 0.1;    ///< pull to the skinned positions, per unit of graph degree
-  int arap_iterations = 100;   ///< ARAP refinement steps at most (0: skinning alone)
+  double arap_anchor = 0.1;   ///< pull to the skinned positions, per unit of graph degree
+  int arap_iterations = 100;  ///< ARAP refinement steps at most (0: skinning alone)
 };
 
 struct ScfResult {
-  Eigen::MatrixX3d positions;  ///< canonical positions of every graph vertex, zero mean
-  Eigen::MatrixX3d skinned;    ///< the same before the ARAP refinement, zero mean
-  CurveSkeleton skeleton;      ///< the rest skeleton
-  UnbentSkeleton unbent;       ///< its straightened nodes and the MDS record
+  Eigen::MatrixX3d positions;        ///< canonical positions of every graph vertex, zero mean
+  Eigen::MatrixX3d skinned;          ///< the same before the ARAP refinement, zero mean
+  CurveSkeleton skeleton;            ///< the rest skeleton
+  UnbentSkeleton unbent;             ///< its straightened nodes and the MDS record
   Eigen::MatrixX3d canonical_nodes;  ///< the straightened nodes where `positions` has them
 };
 

@@ -8,12 +8,12 @@
 namespace unfold {
 
 struct UnbentSkeleton {
-  Eigen::MatrixX3d nodes;           ///< straightened node positions
-  Eigen::MatrixXd distances;        ///< all-pairs distances along the rest skeleton's bones
-  std::vector<int> parent;          ///< spanning tree from the centre node: parent or -1 (root)
-  std::vector<int> order;           ///< the nodes, parents before children
-  double stress = 0;                ///< SMACOF's final stress (before the lengths are restored)
-  int iterations = 0;               ///< Guttman transforms
+  Eigen::MatrixX3d nodes;     ///< straightened node positions
+  Eigen::MatrixXd distances;  ///< all-pairs distances along the rest skeleton's bones
+  std::vector<int> parent;    ///< spanning tree from the centre node: parent or -1 (root)
+  std::vector<int> order;     ///< the nodes, parents before children
+  double stress = 0;          ///< SMACOF's final stress (before the lengths are restored)
+  int iterations = 0;         ///< Guttman transforms
 };
 
 /// Straightens a skeleton: SMACOF (all pairs, weights 1, started from the
