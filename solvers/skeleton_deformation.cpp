@@ -57,7 +57,7 @@ SkeletonDeformation deform_by_skeleton(const EdgeGraph& graph, const Eigen::Matr
     throw UsageError("deform_by_skeleton: the blend radius must be positive");
   const std::vector<Eigen::Matrix3d> R = node_rotations(X, unbent);
 
-  std::vector<std::vector<std::pair<int, double>>> weights(size_t(m));
+  std::vector<std::vector<std::pair<int, double>>> weights(static_cast<size_t>(m));
   for (Eigen::Index s = 0; s < m; ++s)
     for (Eigen::Index k = 0; k < m; ++k) {
       const double t = unbent.distances(s, k) / options.blend_radius;
