@@ -83,8 +83,13 @@ CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
                      " connected components; the skeleton needs one");
   Mesh mesh = to_cgal_mesh(V, F);
   if (const int holes = close_holes(&mesh)) LOG(INFO) << "scf: closed " << holes << " hole(s)";
-  if (!CGAL::is_closed(mesh))
-    throw InputError("scf: the surface is open and its holes could not be closed");
+  if (!CGAL::is_closed(mesh)) {
+    int open_edges = 0;
+    for (const Mesh::Halfedge_index h : mesh.halfedges()) open_edges += mesh.is_border(h);
+    throw InputError("scf: the surface is open and " + std::to_string(open_edges) +
+                     " boundary edges are left after closing its holes; the skeleton needs a "
+                     "closed surface");
+  }
 
   const Eigen::RowVector3d centroid = V.colwise().mean();
   const double diameter = 2 * (V.rowwise() - centroid).rowwise().norm().maxCoeff();
