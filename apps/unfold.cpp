@@ -16,6 +16,7 @@
 #include "mesh/read_surface_mesh.h"
 #include "mesh/read_tet_mesh.h"
 #include "mesh/tet_mesh_boundary.h"
+#include "mesh/write_polyline.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
 #include "pipeline/beta_sweep.h"
@@ -45,6 +46,10 @@ DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (Tet
 DEFINE_string(rest_tet_output, "",
               "the tet mesh the run unfolded, at rest (.vtu or .node): to keep, inspect, or give "
               "back with --tet_input");
+DEFINE_string(skeleton_output, "",
+              "method scf: the input's curve skeleton as line segments (.vtk or .ply)");
+DEFINE_string(canonical_skeleton_output, "",
+              "method scf: the straightened skeleton, placed like --output (.vtk or .ply)");
 DEFINE_string(metrics_json, "", "metrics, timings and the per-iteration history as JSON");
 DEFINE_string(render, "",
               "before/after picture (.png): side and top views of the input and the canonical "
@@ -85,11 +90,19 @@ int run() {
     if (!path.empty()) unfold::check_surface_mesh_format(path);
   unfold::check_tet_mesh_format(FLAGS_tet_output);
   unfold::check_tet_mesh_format(FLAGS_rest_tet_output);
+  for (const std::string& path : {FLAGS_skeleton_output, FLAGS_canonical_skeleton_output}) {
+    if (path.empty()) continue;
+    if (options.method != "scf")
+      throw unfold::UsageError(
+          "--skeleton_output and --canonical_skeleton_output need method: scf");
+    unfold::check_polyline_format(path);
+  }
   unfold::check_png_format(FLAGS_render);
   unfold::check_png_format(FLAGS_convergence_png);
   for (const std::string& path :
        {FLAGS_output, FLAGS_input_copy, FLAGS_tet_output, FLAGS_rest_tet_output, FLAGS_metrics_json,
-        FLAGS_render, FLAGS_convergence, FLAGS_convergence_png})
+        FLAGS_render, FLAGS_convergence, FLAGS_convergence_png, FLAGS_skeleton_output,
+        FLAGS_canonical_skeleton_output})
     if (!path.empty()) unfold::check_writable_destination(path);
   unfold::RenderOptions render;
   render.up_axis = unfold::axis_index(FLAGS_render_up, "--render_up");
@@ -125,6 +138,11 @@ int run() {
                 unfold::prepare_mesh_from_tets(surface, given_tets.V, given_tets.T, options),
                 options);
 
+  const bool wants_skeleton =
+      !FLAGS_skeleton_output.empty() || !FLAGS_canonical_skeleton_output.empty();
+  if (wants_skeleton && result.skeleton.nodes.rows() == 0)
+    throw unfold::UsageError(
+        "--skeleton_output: no single skeleton (components: separately unfolds each apart)");
   unfold::OutputTransaction outputs;  // all files or none (docs/errors.md)
   if (!FLAGS_output.empty()) unfold::write_surface_mesh(FLAGS_output, result.canonical);
   if (!FLAGS_input_copy.empty()) unfold::write_surface_mesh(FLAGS_input_copy, result.surface);
@@ -133,6 +151,11 @@ int run() {
                            unfold::canonical_tet_fields(result));
   if (!FLAGS_rest_tet_output.empty())
     unfold::write_tet_mesh(FLAGS_rest_tet_output, result.tets.V, result.tets.T);
+  if (!FLAGS_skeleton_output.empty())
+    unfold::write_polyline(FLAGS_skeleton_output, result.skeleton.nodes, result.skeleton.edges);
+  if (!FLAGS_canonical_skeleton_output.empty())
+    unfold::write_polyline(FLAGS_canonical_skeleton_output, result.skeleton_canonical,
+                           result.skeleton.edges);
   if (!FLAGS_metrics_json.empty()) unfold::write_metrics_json(FLAGS_metrics_json, result, options);
   if (!FLAGS_convergence.empty())
     unfold::write_convergence_csv(FLAGS_convergence, result.cascade.history);

@@ -7,7 +7,7 @@
 // X(flag, yaml path, member of unfold::Options, help)
 #define UNFOLD_CONFIG_KEYS(X)                                                                    \
   X(method, "method", method,                                                                    \
-    "local_global (the paper's), ceres (L-BFGS), dpmu or lsmds (baselines, docs/baselines.md)")  \
+    "local_global (the paper's), ceres (L-BFGS); baselines dpmu, lsmds, scf (docs/baselines.md)") \
   X(target_vertices, "simplify.target_vertices", target_vertices,                                \
     "simplify the surface to about this many vertices first; 0 keeps all")                       \
   X(tet_route, "tetrahedralize.route", tet.route,                                                \
@@ -92,6 +92,22 @@
     "method lsmds: Guttman transforms at most")                                                  \
   X(lsmds_tolerance, "lsmds.tolerance", lsmds.tolerance,                                         \
     "method lsmds: stop when the relative stress decrease is below this")                        \
+  X(scf_quality_speed_tradeoff, "scf.quality_speed_tradeoff", scf.skeleton.quality_speed_tradeoff,\
+    "method scf: CGAL skeleton w_H (larger: finer and slower)")                                  \
+  X(scf_medially_centered_speed_tradeoff, "scf.medially_centered_speed_tradeoff", scf.skeleton.medially_centered_speed_tradeoff,\
+    "method scf: CGAL skeleton w_M (larger: better centred)")                                    \
+  X(scf_max_iterations, "scf.max_iterations", scf.skeleton.max_iterations,                       \
+    "method scf: skeleton contraction steps at most")                                            \
+  X(scf_min_edge_length, "scf.min_edge_length", scf.skeleton.min_edge_length,                    \
+    "method scf: skeleton edges shorter than this times the diameter collapse")                  \
+  X(scf_mds_iterations, "scf.mds_iterations", scf.mds_iterations,                                \
+    "method scf: Guttman transforms on the skeleton at most")                                    \
+  X(scf_blend_radius, "scf.blend_radius", scf.blend_radius,                                      \
+    "method scf: skinning blend radius along the skeleton, times the diameter")                  \
+  X(scf_arap_anchor, "scf.arap_anchor", scf.arap_anchor,                                         \
+    "method scf: ARAP refinement's pull to the skinned positions")                               \
+  X(scf_arap_iterations, "scf.arap_iterations", scf.arap_iterations,                             \
+    "method scf: ARAP refinement steps at most; 0: skinning alone")                              \
   X(ceres_line_search_direction_type, "ceres.line_search_direction_type",                        \
     ceres.line_search_direction_type,                                                            \
     "LBFGS, BFGS, NONLINEAR_CONJUGATE_GRADIENT or STEEPEST_DESCENT")                             \

@@ -212,8 +212,8 @@ Options load_options(const std::string& config_path,
 
 void validate_options(const Options& o) {
   require(o.method == "local_global" || o.method == "ceres" || o.method == "dpmu" ||
-              o.method == "lsmds",
-          "method", "must be local_global, ceres, dpmu or lsmds, got '" + o.method + "'");
+              o.method == "lsmds" || o.method == "scf",
+          "method", "must be local_global, ceres, dpmu, lsmds or scf, got '" + o.method + "'");
   require(o.target_vertices == 0 || o.target_vertices >= 4, "simplify.target_vertices",
           "must be 0 (keep all) or at least 4");
   require(o.tet.route == "auto" || o.tet.route == "conforming" || o.tet.route == "robust",
@@ -228,10 +228,11 @@ void validate_options(const Options& o) {
           "must be volume or surface, got '" + o.domain + "'");
   require(o.tet_shape == "input" || o.tet_shape == "unfolded", "tetrahedralize.shape",
           "must be input or unfolded, got '" + o.tet_shape + "'");
-  require(o.tet_shape == "input" || (o.domain == "surface" && o.method != "lsmds"),
+  require(o.tet_shape == "input" ||
+              (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
           "tetrahedralize.shape",
-          "unfolded needs domain: surface (the surface solve it "
-          "tetrahedralizes) and a method other than lsmds");
+          "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method "
+          "other than lsmds and scf");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
@@ -291,18 +292,19 @@ void validate_options(const Options& o) {
           "must be a finite number >= 0");
   require(o.domain != "surface" || e.volume_weight == 0, "volume.weight",
           "must be 0 with domain: surface, which has no tets to keep the volume of");
-  if (o.method != "lsmds") {
+  if (o.method != "lsmds" && o.method != "scf") {
     const std::string refused = why_backend_cannot_run(o.method, probe_terms(e));
     require(refused.empty(), "method", "is " + o.method + ", but " + refused);
   }
   validate_linear_solver_options(o.linear_solver);
   validate_ceres_options(o.ceres);
   validate_lsmds_options(o.lsmds);
+  validate_scf_options(o.scf);
 }
 
 bool tets_from_unfolded(const Options& options) {
   return options.tet_shape == "unfolded" && options.domain == "surface" &&
-         options.method != "lsmds";
+         options.method != "lsmds" && options.method != "scf";
 }
 
 bool computes_metric(const Options& options, const std::string& name) {

@@ -14,6 +14,7 @@
 #include "solvers/integrate_rotation_field.h"
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
+#include "solvers/scf.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -37,6 +38,7 @@ struct Options {
   EnergyOptions energy;
   CeresOptions ceres;
   LsmdsOptions lsmds;                                              ///< method: lsmds only
+  ScfOptions scf;                                                  ///< method: scf only
   std::vector<std::string> metrics = {"E_rig", "E_str", "E_geo"};  ///< the metrics computed
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;

@@ -21,6 +21,7 @@
 #include "metrics/geodesic_error.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
+#include "pipeline/scf_unfold.h"
 #include "pipeline/unfold_components.h"
 #include "solvers/arap_solve.h"
 #include "solvers/beta_schedule.h"
@@ -353,6 +354,8 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   std::future<GeodesicRows> geodesic_rows = start_geodesic_rows(graph, result.tets.V, options);
   if (options.method == "lsmds") {
     result.cascade = lsmds_cascade_result(graph, result.tets.V, options.lsmds);
+  } else if (options.method == "scf") {
+    unfold_scf(graph, options.scf, &result);
   } else if (on_unfolded) {
     // the surface solve ran above, before its tets could be made
   } else if (options.domain == "surface" && result.tets.T.rows() > 0) {
@@ -360,7 +363,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   } else {
     solve_cascade(graph, result.tets, options, &result);
   }
-  if (options.integrate.iterations > 0) integrate_cascade_rotations(graph, options, &result);
+  // The rotation integration belongs to the cascade methods; SCF's ARAP refinement is its own.
+  if (options.integrate.iterations > 0 && options.method != "scf")
+    integrate_cascade_rotations(graph, options, &result);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
@@ -374,6 +379,8 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   result.tet_canonical.rowwise() += result.tets.V.colwise().mean();
   result.canonical.faces = result.surface.faces;
   result.canonical.V = result.tet_canonical.topRows(result.tets.num_surface_vertices);
+  if (result.skeleton_canonical.rows() > 0)
+    result.skeleton_canonical.rowwise() += result.tets.V.colwise().mean();
 
   const auto metrics_start = std::chrono::steady_clock::now();
   const Eigen::MatrixX3d& P = result.tets.V;

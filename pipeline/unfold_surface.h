@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config/options.h"
+#include "mesh/curve_skeleton.h"
 #include "mesh/surface_mesh.h"
 #include "mesh/tet_mesh.h"
 #include "solvers/cascade.h"
@@ -64,6 +65,8 @@ struct UnfoldResult {
   double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
   double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
   std::vector<std::string> warnings;
+  CurveSkeleton skeleton;               ///< method scf: the input's curve skeleton, else empty
+  Eigen::MatrixX3d skeleton_canonical;  ///< method scf: its straightened nodes, placed as canonical
 };
 
 /// Checks, simplifies (options.target_vertices) and tetrahedralizes a surface.

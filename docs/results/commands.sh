@@ -11,7 +11,7 @@ for f in "$DATA"/tosca/*.off "$DATA"/faust/*.off; do ln -sf "$(realpath "$f")" "
 
 # Every method at the paper's resolution (surfaces simplified to ~2,000 vertices).
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
-  --configs configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml \
+  --configs configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml,configs/scf.yaml \
   --target_vertices 2000 --jobs 2
 # Ours at full resolution: the paper's method, the surface domain and the
 # integrated rotation field (docs/method.md, pose invariance); pose pictures

@@ -42,6 +42,9 @@ py::dict result_dict(const UnfoldResult& r, const TetMeshFields& fields, const O
   d["rest_tet_vertices"] = Vertices(r.tets.V);
   d["tet_vertex_fields"] = named_fields(fields.per_vertex);
   d["tet_fields"] = named_fields(fields.per_tet);
+  d["skeleton_nodes"] = Vertices(r.skeleton.nodes);
+  d["skeleton_edges"] = Elements(r.skeleton.edges);
+  d["canonical_skeleton_nodes"] = Vertices(r.skeleton_canonical);
   return d;
 }
 

@@ -70,7 +70,7 @@ def test_float32_and_strided_inputs_give_the_run_of_their_float64_values(demo):
     np.testing.assert_array_equal(r.vertices, expected.vertices)
 
 
-@pytest.mark.parametrize("method", ["local_global", "ceres", "lsmds", "dpmu"])
+@pytest.mark.parametrize("method", ["local_global", "ceres", "lsmds", "dpmu", "scf"])
 def test_every_method_runs_through_the_same_call(demo, method):
     config = SOURCE_DIR / "configs" / f"{method if method != 'local_global' else 'default'}.yaml"
     r = unfold.unfold(*demo, config=config, **SMALL)
@@ -79,6 +79,9 @@ def test_every_method_runs_through_the_same_call(demo, method):
     assert np.isfinite(r.vertices).all()
     moved = np.linalg.norm(r.vertices - r.rest_tet_vertices[: len(r.vertices)], axis=1)
     assert moved.max() > 0.1  # the legs moved
+    if method == "scf":
+        assert r.skeleton_edges.shape[1] == 2 and len(r.skeleton_edges) > 0
+        assert r.canonical_skeleton_nodes.shape == r.skeleton_nodes.shape
 
 
 def cli_error(*args):
@@ -116,7 +119,7 @@ def test_numerical_error_carries_the_command_lines_message():
         (None, {"cascade": {"k_itr": 1}}, "unknown config key 'cascade.k_itr'"),
         ({"cascade": {"k_iter": 0}}, {}, "config key 'cascade.k_iter' must be at least 1"),
         (None, {"k_iter": "many"}, "config key 'cascade.k_iter' must be an integer"),
-        (None, {"method": "magic"}, "must be local_global, ceres, dpmu or lsmds, got 'magic'"),
+        (None, {"method": "magic"}, "must be local_global, ceres, dpmu, lsmds or scf, got 'magic'"),
         (None, {"method": None}, "config key 'method' cannot be set to None"),
         (BAD_INPUTS / "negative_beta.yaml", {}, "beta.value"),
         (42, {}, "config must be a YAML file path or a dict"),

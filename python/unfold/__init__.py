@@ -52,6 +52,10 @@ class Result:
     tet_vertex_fields, tet_fields: per tet vertex (rigidity_error,
         stretch_ratio) and per tet (volume_ratio, rigidity), as written to
         --tet_output x.vtu.
+    skeleton_nodes, skeleton_edges, canonical_skeleton_nodes: method="scf"
+        only (else empty): the input's curve skeleton, (k, 3) nodes and (b, 2)
+        int32 bones, and its straightened nodes placed like vertices (as
+        --skeleton_output and --canonical_skeleton_output).
     """
 
     vertices: np.ndarray
@@ -62,6 +66,9 @@ class Result:
     rest_tet_vertices: np.ndarray
     tet_vertex_fields: dict[str, np.ndarray] = field(repr=False)
     tet_fields: dict[str, np.ndarray] = field(repr=False)
+    skeleton_nodes: np.ndarray = field(repr=False)
+    skeleton_edges: np.ndarray = field(repr=False)
+    canonical_skeleton_nodes: np.ndarray = field(repr=False)
 
     @property
     def rigidity_error(self) -> np.ndarray:
@@ -125,7 +132,7 @@ def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
     cascade={"k_iter": 20}, **{"beta.value": 2.0}, or a flag name of the
     command line (k_iter=20, beta=2.0). Every key: unfold.config_keys().
     The baselines and backends are methods: method="local_global" (default),
-    "ceres", "dpmu", "lsmds".
+    "ceres", "dpmu", "lsmds", "scf".
 
     tets, tet_vertices: a tet mesh to unfold instead of tetrahedralizing the
     surface ((k, 4) indices into the (p, 3) tet_vertices, e.g. from TetWild or

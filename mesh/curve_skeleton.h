@@ -1,0 +1,44 @@
+// The curve skeleton of a closed surface and which skeleton node each surface
+// vertex contracted to: CGAL's mean-curvature-flow skeletonization
+// (Tagliasacchi et al. 2012, the successor of Au et al. 2008's mesh
+// contraction that the SCF baseline uses; docs/baselines.md). CGAL stays
+// inside curve_skeleton.cpp: this interface is plain Eigen.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace unfold {
+
+struct CurveSkeletonOptions {
+  double quality_speed_tradeoff = 0.1;            ///< CGAL's w_H: larger, slower and finer
+  double medially_centered_speed_tradeoff = 0.2;  ///< CGAL's w_M: larger, more centred
+  int max_iterations = 500;                       ///< contraction steps at most
+  /// edges shorter than this times the mesh's diameter (twice the largest
+  /// distance from the centroid: unlike CGAL's bounding-box default, the same
+  /// for every rotation of the mesh) are collapsed
+  double min_edge_length = 0.002;
+};
+
+struct CurveSkeleton {
+  Eigen::MatrixX3d nodes;          ///< one row per skeleton node
+  Eigen::MatrixX2i edges;          ///< bones: node index pairs, first < second
+  Eigen::VectorXi node_of_vertex;  ///< per surface vertex, the node it contracted to
+};
+
+/// Checks the option values. @throws UsageError naming the scf.* key
+void validate_curve_skeleton_options(const CurveSkeletonOptions& options);
+
+/// Contracts the surface (V, F) by mean curvature flow into a curve skeleton.
+/// @param V surface vertices
+/// @param F triangles of a 2-manifold, connected surface; its holes are closed
+///         (triangles between each hole's own vertices) before the contraction
+/// @throws InputError if the surface has fewer than 8 vertices, is
+///         non-manifold, has several components or a hole that cannot be
+///         closed; NumericalError if the contraction yields no skeleton of at
+///         least two nodes (a thin sheet may collapse to a point or a surface)
+///         or CGAL fails
+/// @throws UsageError for bad options
+CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                             const CurveSkeletonOptions& options = {});
+
+}  // namespace unfold

@@ -1,0 +1,26 @@
+#include "pipeline/scf_unfold.h"
+
+#include <utility>
+
+#include "metrics/edge_ratio.h"
+#include "solvers/scf.h"
+
+namespace unfold {
+
+void unfold_scf(const EdgeGraph& graph, const ScfOptions& options, UnfoldResult* result) {
+  const TetMesh& tets = result->tets;
+  ScfResult r =
+      scf(graph, tets.V, tets.num_surface_vertices, triangulate_faces(result->surface), options);
+  CascadeResult& c = result->cascade;
+  c.positions = std::move(r.positions);
+  c.iterations = r.unbent.iterations;
+  c.cascades = 1;
+  c.final_energy = r.unbent.stress;
+  c.edge_ratio = edge_ratio(graph, tets.V, c.positions);
+  c.reached_band = true;  // no band applies
+  c.history.push_back({c.iterations, 1, 0.0, c.final_energy, c.edge_ratio});
+  result->skeleton = std::move(r.skeleton);
+  result->skeleton_canonical = std::move(r.canonical_nodes);
+}
+
+}  // namespace unfold

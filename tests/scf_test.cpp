@@ -1,0 +1,191 @@
+// The SCF baseline: the curve skeleton of the demo animal matches its rig and
+// holes are closed for it, MDS straightens a bent chain keeping its bone
+// lengths, a rigid motion of the input moves the output rigidly, and surfaces
+// without a skeleton fail with typed errors.
+#include "solvers/scf.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "core/errors.h"
+#include "mesh/curve_skeleton.h"
+#include "mesh/edge_graph.h"
+#include "metrics/rigid_alignment.h"
+#include "pipeline/unfold_surface.h"
+#include "shapes/articulated_shape.h"
+#include "solvers/skeleton_deformation.h"
+#include "solvers/unbend_skeleton.h"
+
+namespace unfold {
+namespace {
+
+using Eigen::Vector3d;
+
+std::vector<int> degrees(const CurveSkeleton& s) {
+  std::vector<int> d(size_t(s.nodes.rows()), 0);
+  for (int e = 0; e < s.edges.rows(); ++e) {
+    ++d[size_t(s.edges(e, 0))];
+    ++d[size_t(s.edges(e, 1))];
+  }
+  return d;
+}
+
+// Length of the branch from a leaf to the first node of degree >= 3.
+double branch_length(const CurveSkeleton& s, const std::vector<int>& degree, int leaf) {
+  const EdgeGraph g = build_edge_graph(int(s.nodes.rows()), Eigen::MatrixXi(s.edges));
+  double length = 0;
+  int previous = -1, node = leaf;
+  while (degree[size_t(node)] <= 2) {
+    int next = -1;
+    for (int k = g.offsets[size_t(node)]; k < g.offsets[size_t(node) + 1]; ++k)
+      if (g.neighbors[size_t(k)] != previous) next = g.neighbors[size_t(k)];
+    if (next < 0) break;
+    length += (s.nodes.row(next) - s.nodes.row(node)).norm();
+    previous = node;
+    node = next;
+  }
+  return length;
+}
+
+TEST(CurveSkeleton, DemoAnimalHasOneBranchPerLimbEndingAtItsTip) {
+  const SurfaceMesh rest = make_articulated_shape(ShapePose::rest(), 32);
+  const CurveSkeleton s = curve_skeleton(rest.V, triangulate_faces(rest));
+  ASSERT_EQ(s.node_of_vertex.size(), rest.V.rows());
+  // The rig's limb tips (shapes/articulated_shape.cpp): four feet, tail, snout.
+  const std::array<Vector3d, 6> tips = {Vector3d(0.6, 0.25, -1.4),  Vector3d(0.6, -0.25, -1.4),
+                                        Vector3d(-0.6, 0.25, -1.4), Vector3d(-0.6, -0.25, -1.4),
+                                        Vector3d(-1.9, 0, 0.5),     Vector3d(1.8, 0, 0.72)};
+  const std::vector<int> degree = degrees(s);
+  // Limb branches: leaves at least a third of a leg's length (1.15) from a junction.
+  std::vector<int> limbs;
+  for (int i = 0; i < s.nodes.rows(); ++i)
+    if (degree[size_t(i)] == 1 && branch_length(s, degree, i) > 0.4) limbs.push_back(i);
+  EXPECT_EQ(limbs.size(), tips.size());
+  // Each tip has its own limb leaf nearby: within half a leg's length (the
+  // contraction's branches stop short of the tips by about the part's radius
+  // and the collapsed end edges).
+  std::vector<int> used;
+  for (const Vector3d& tip : tips) {
+    double nearest = INFINITY;
+    int leaf = -1;
+    for (int l : limbs)
+      if ((s.nodes.row(l).transpose() - tip).norm() < nearest) {
+        nearest = (s.nodes.row(l).transpose() - tip).norm();
+        leaf = l;
+      }
+    EXPECT_LT(nearest, 0.55) << "no limb branch ends near " << tip.transpose();
+    EXPECT_EQ(std::count(used.begin(), used.end(), leaf), 0) << "two tips share a branch";
+    used.push_back(leaf);
+  }
+}
+
+TEST(CurveSkeleton, ClosesHolesWithoutNewVertices) {
+  const SurfaceMesh rest = make_articulated_shape(ShapePose::rest(), 16);
+  const Eigen::MatrixX3i T = triangulate_faces(rest);
+  const CurveSkeleton s = curve_skeleton(rest.V, T.bottomRows(T.rows() - 2));
+  EXPECT_EQ(s.node_of_vertex.size(), rest.V.rows());
+  EXPECT_GE(s.node_of_vertex.minCoeff(), 0);
+  EXPECT_GE(s.edges.rows(), 5);
+}
+
+TEST(UnbendSkeleton, StraightensABentChainKeepingItsBoneLengths) {
+  // A chain bent in 3D, bones of uneven length.
+  const int n = 12;
+  Eigen::MatrixX3d X(n, 3);
+  Eigen::MatrixX2i E(n - 1, 2);
+  for (int i = 0; i < n; ++i) {
+    const double t = 0.5 * i;
+    X.row(i) << std::cos(t) * (1 + 0.1 * i), std::sin(t), 0.3 * i * (i % 3 == 0 ? 1.2 : 1.0);
+    if (i > 0) E.row(i - 1) << i - 1, i;
+  }
+  const UnbentSkeleton u = unbend_skeleton(X, E, 2000, 1e-12);
+  for (int e = 0; e < E.rows(); ++e)
+    EXPECT_NEAR((u.nodes.row(E(e, 1)) - u.nodes.row(E(e, 0))).norm(),
+                (X.row(E(e, 1)) - X.row(E(e, 0))).norm(), 1e-12);
+  // Straight: the end-to-end distance is the chain's length.
+  const double length = u.distances(0, n - 1);
+  EXPECT_NEAR((u.nodes.row(n - 1) - u.nodes.row(0)).norm(), length, 1e-3 * length);
+  EXPECT_GT((X.row(n - 1) - X.row(0)).norm(), length * 0.1);  // it was bent
+  EXPECT_LT((X.row(n - 1) - X.row(0)).norm(), length * 0.8);
+}
+
+// The steps after the skeleton extraction are exactly equivariant: the moved
+// skeleton of the moved mesh gives the moved canonical form.
+TEST(Scf, UnbendingAndDeformationCommuteWithRigidMotions) {
+  const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(0), 24);
+  const Eigen::MatrixX3i F = triangulate_faces(pose);
+  const EdgeGraph graph = build_edge_graph(int(pose.V.rows()), Eigen::MatrixXi(F));
+  const CurveSkeleton a = curve_skeleton(pose.V, F);
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d t(3, -1, 2);
+  CurveSkeleton b = a;
+  b.nodes = (a.nodes * R.transpose()).rowwise() + t;
+  const Eigen::MatrixX3d moved = (pose.V * R.transpose()).rowwise() + t;
+  SkeletonDeformationOptions options;
+  options.blend_radius = 0.2;
+  const SkeletonDeformation da =
+      deform_by_skeleton(graph, pose.V, a, unbend_skeleton(a.nodes, a.edges), options);
+  const SkeletonDeformation db =
+      deform_by_skeleton(graph, moved, b, unbend_skeleton(b.nodes, b.edges), options);
+  const double size = (pose.V.rowwise() - pose.V.colwise().mean()).rowwise().norm().maxCoeff();
+  EXPECT_LT((db.positions - da.positions * R.transpose()).rowwise().norm().maxCoeff(), 1e-6 * size);
+  // And they do move the mesh: the legs spread, far from a rigid motion of the input.
+  EXPECT_GT(aligned_distance(pose.V, da.positions), 0.05 * size);
+}
+
+// CGAL's contraction collapses edges in an order that follows memory
+// addresses, so two runs (moved or not) may differ a little (docs/reliability.md):
+// through the whole pipeline the moved input's form is the form moved, up to
+// that variation.
+TEST(Scf, RigidMotionOfTheInputMovesTheOutputRigidly) {
+  const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(0), 24);
+  Options options;
+  options.method = "scf";
+  options.metrics = {};
+  const UnfoldResult a = unfold_surface(pose, options);
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  SurfaceMesh moved = pose;
+  moved.V = (pose.V * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
+  const UnfoldResult b = unfold_surface(moved, options);
+  ASSERT_EQ(a.canonical.V.rows(), b.canonical.V.rows());
+  // The motion itself: b's form is a's moved by R and the translation.
+  const Eigen::MatrixX3d expected =
+      (a.canonical.V * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
+  const double size = (pose.V.rowwise() - pose.V.colwise().mean()).rowwise().norm().maxCoeff();
+  EXPECT_LT((b.canonical.V - expected).rowwise().norm().mean(), 0.05 * size);
+}
+
+TEST(Scf, SurfacesWithoutASkeletonFailWithTypedErrors) {
+  // Too few vertices: a tetrahedron.
+  Eigen::MatrixX3d V(4, 3);
+  V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  Eigen::MatrixX3i F(4, 3);
+  F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+  EXPECT_THROW(curve_skeleton(V, F), InputError);
+  // Two components: the animal twice, side by side.
+  const SurfaceMesh animal = make_articulated_shape(ShapePose::rest(), 16);
+  const Eigen::MatrixX3i T = triangulate_faces(animal);
+  const int n = int(animal.V.rows());
+  Eigen::MatrixX3d V2(2 * n, 3);
+  V2 << animal.V, animal.V.rowwise() + Eigen::RowVector3d(0, 5, 0);
+  Eigen::MatrixX3i F2(2 * T.rows(), 3);
+  F2 << T, T.array() + n;
+  EXPECT_THROW(curve_skeleton(V2, F2), InputError);
+  // Non-manifold: a triangle twice.
+  Eigen::MatrixX3i doubled(T.rows() + 1, 3);
+  doubled << T, T.row(0);
+  EXPECT_THROW(curve_skeleton(animal.V, doubled), InputError);
+  ScfOptions bad;
+  bad.blend_radius = 0;
+  EXPECT_THROW(validate_scf_options(bad), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
