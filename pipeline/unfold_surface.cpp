@@ -187,7 +187,9 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, Unfold
   Q.topRows(surface.num_surface_vertices) = result.cascade.positions;
   ArapSolveOptions place;
   place.num_fixed = surface.num_surface_vertices;
+  const auto interior_start = std::chrono::steady_clock::now();
   result.cascade.positions = arap_solve(tet_graph, result.tets.V, std::move(Q), place);
+  result.seconds_interior = seconds_since(interior_start);
 }
 
 // integrate: the cascade's rotation field integrated on the whole tet mesh
@@ -201,8 +203,11 @@ void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options,
   const double lambda2 = fiedler_value(graph_laplacian(build_edge_graph(
       int(result.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)))));
   CascadeResult& c = result.cascade;
-  c.positions =
-      integrate_rotation_field(graph, result.tets.V, c.positions, lambda2, options.integrate);
+  IntegrateTimes times;
+  c.positions = integrate_rotation_field(graph, result.tets.V, c.positions, lambda2,
+                                         options.integrate, &times);
+  result.seconds_integration = times.integration;
+  result.seconds_anchored = times.anchored;
   c.edge_ratio = edge_ratio(graph, result.tets.V, c.positions);
   c.reached_band = in_band(c.edge_ratio, options.cascade.edge_ratio_band);
 }

@@ -54,9 +54,12 @@ struct UnfoldResult {
   int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
   double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
   CgStats cg;                 ///< iterative: what the CG global steps did
-  double seconds_lambda2 = 0;  ///< the solver's setup (AMG hierarchy included) and lambda_2
-  double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
-  double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
+  double seconds_lambda2 = 0;      ///< the solver's setup (AMG hierarchy included) and lambda_2
+  double seconds_cascade = 0;      ///< the cascade (its last solve, for domain: surface)
+  double seconds_unfold = 0;       ///< lambda_2 and the cascade, and what surrounds them
+  double seconds_interior = 0;     ///< domain: surface: the interior placed by ARAP
+  double seconds_integration = 0;  ///< integrate: the rotation field integrated (one step)
+  double seconds_anchored = 0;     ///< integrate: the anchored ARAP steps after it
   std::vector<std::string> warnings;
 };
 
