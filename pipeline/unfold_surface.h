@@ -22,7 +22,10 @@ struct UnfoldMetrics {
   bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
   double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
-  int inverted_tets = 0;    ///< tetrahedra whose orientation flipped
+  /// why E_geo was left out though metrics.compute lists it (above
+  /// metrics.geodesic_max_vertices) and how to ask for it; empty otherwise
+  std::string E_geo_skipped;
+  int inverted_tets = 0;  ///< tetrahedra whose orientation flipped
   double seconds = 0;
   /// E_rig's term of each tet vertex (RigidityError); NaN when E_rig is not computed
   Eigen::VectorXd rigidity_per_vertex;

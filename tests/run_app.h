@@ -17,23 +17,27 @@ namespace unfold::test {
 struct AppRun {
   int exit_code;    ///< the process's exit status, -1 if it died from a signal
   std::string err;  ///< everything it wrote to stderr
+  std::string out;  ///< everything it wrote to stdout (the summary line)
 };
 
 /// Runs `build/bin/<app> <args>` (args are passed through the shell); a
 /// death by a signal, even reported by the shell as 128 + signal, gives -1.
 inline AppRun run_app(const std::string& app, const std::string& args) {
   // One stderr file per process: ctest runs tests in parallel processes.
-  const std::string err_path =
-      ::testing::TempDir() + app + "_stderr_" + std::to_string(getpid()) + ".txt";
+  const std::string stem = ::testing::TempDir() + app + "_std" + std::to_string(getpid());
+  const std::string err_path = stem + "err.txt", out_path = stem + "out.txt";
   const int status = std::system(
-      (std::string(UNFOLD_BIN_DIR) + "/" + app + " " + args + " 2>" + err_path + " >/dev/null")
+      (std::string(UNFOLD_BIN_DIR) + "/" + app + " " + args + " 2>" + err_path + " >" + out_path)
           .c_str());
-  std::ifstream in(err_path);
-  std::stringstream err;
-  err << in.rdbuf();
-  std::remove(err_path.c_str());
+  const auto take = [](const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::remove(path.c_str());
+    return text.str();
+  };
   const bool exited = WIFEXITED(status) && WEXITSTATUS(status) < 128;
-  return {exited ? WEXITSTATUS(status) : -1, err.str()};
+  return {exited ? WEXITSTATUS(status) : -1, take(err_path), take(out_path)};
 }
 
 /// Runs `build/bin/unfold <args>`.
