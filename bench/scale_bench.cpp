@@ -12,11 +12,14 @@
 // (seconds_unfold: AMG setup, lambda_2 and the cascade; seconds_total: the
 // whole unfold_surface call), then
 //   seconds_read seconds_lambda2 seconds_cascade seconds_write surface_vertices E_str
+//   seconds_interior seconds_integration seconds_anchored
 // (seconds_read: reading --input, 0 for the demo shape; seconds_lambda2: the
 // solver's setup, AMG included, and lambda_2; seconds_write: the canonical
 // surface as OFF and the metrics JSON, as `unfold --output --metrics_json`
 // writes them, into a temporary folder). --metrics=E_rig,E_str (etc.) sets
-// metrics.compute. --analyze_only stops after the direct solver's
+// metrics.compute, --config=C.yaml a config (e.g. configs/invariant.yaml: its
+// stages after the surface solve are seconds_interior, seconds_integration and
+// seconds_anchored; 0 for the paper's method). --analyze_only stops after the direct solver's
 // symbolic analysis and prints
 //   tet_vertices tets seconds_tet seconds_analyze factor_nonzeros factor_gflops peak_rss_mb
 // --plot draws the scaling plot from bench/run's CSV (columns as the row above).
@@ -99,7 +102,7 @@ int plot(const std::string& csv, const std::string& png) {
 }
 
 int run(int argc, char** argv) {
-  std::string input, plot_csv, output, linear_solver = "auto", metrics;
+  std::string input, plot_csv, output, linear_solver = "auto", metrics, config;
   int resolution = 0;
   double divisions = 0;
   bool analyze_only = false;
@@ -120,6 +123,8 @@ int run(int argc, char** argv) {
       linear_solver = value;
     else if (key == "--metrics")
       metrics = value;
+    else if (key == "--config")
+      config = value;
     else if (key == "--plot")
       plot_csv = value;
     else if (key == "--output")
@@ -135,9 +140,10 @@ int run(int argc, char** argv) {
                                   ? make_articulated_shape(ShapePose::preset(0), resolution)
                                   : read_surface_mesh(input);
   const double seconds_read = input.empty() ? 0 : seconds_since(read_start);
-  std::map<std::string, std::string> overrides = {{"linear_solver.method", linear_solver}};
+  std::map<std::string, std::string> overrides;
+  if (config.empty() || linear_solver != "auto") overrides["linear_solver.method"] = linear_solver;
   if (!metrics.empty()) overrides["metrics.compute"] = metrics;
-  Options options = load_options("", overrides);
+  Options options = load_options(config, overrides);
   if (divisions > 0) options.tet.max_volume = enclosed_volume(surface) / divisions;
   if (analyze_only) {
     TetReport report;
@@ -166,12 +172,12 @@ int run(int argc, char** argv) {
   std::printf(
       "%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%d\t%s\t%d\t%.0f\t%.0f\t%.4f\t%.4f\t%.3f\t%.3f\t%.3f\t%."
       "3f\t%d\t%."
-      "4f\n",
+      "4f\t%.3f\t%.3f\t%.3f\n",
       int(r.tets.V.rows()), int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold,
       r.metrics.seconds, total, r.cascade.iterations, r.linear_solver.c_str(), r.cg.iterations,
       peak_rss_mb(RUSAGE_SELF), peak_rss_mb(RUSAGE_CHILDREN), r.metrics.E_rig, r.cascade.edge_ratio,
       seconds_read, r.seconds_lambda2, r.seconds_cascade, seconds_write, int(r.surface.V.rows()),
-      r.metrics.E_str);
+      r.metrics.E_str, r.seconds_interior, r.seconds_integration, r.seconds_anchored);
   return 0;
 }
 

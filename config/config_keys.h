@@ -132,4 +132,7 @@
     "E_geo from all-pairs geodesics up to this many vertices")                                   \
   X(geodesic_landmarks, "metrics.geodesic_landmarks", geodesic_metric.sources,                   \
     "geodesic source vertices for E_geo above the exact limit")                                  \
+  X(geodesic_max_vertices, "metrics.geodesic_max_vertices", geodesic_max_vertices,             \
+    "E_geo left out above this many tet vertices (0: no limit; unfold: 20000 unless --metrics "   \
+    "is given)")                                                                                 \
   X(threads, "threads", threads, "worker threads; 0 uses every core")

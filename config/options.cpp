@@ -265,6 +265,7 @@ void validate_options(const Options& o) {
   require(o.stretch_metric.sample_pairs >= 2, "metrics.stretch_samples", "must be at least 2");
   require(o.geodesic_metric.exact_limit >= 0, "metrics.geodesic_exact_limit", "must be >= 0");
   require(o.geodesic_metric.sources >= 1, "metrics.geodesic_landmarks", "must be at least 1");
+  require(o.geodesic_max_vertices >= 0, "metrics.geodesic_max_vertices", "must be >= 0");
   require(o.threads >= 0, "threads", "must be >= 0");
   const EnergyOptions& e = o.energy;
   require(std::isfinite(e.stretch_weight) && e.stretch_weight > 0, "stretch.weight",

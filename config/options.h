@@ -40,6 +40,9 @@ struct Options {
   LsmdsOptions lsmds;                                              ///< method: lsmds only
   ScfOptions scf;                                                  ///< method: scf only
   std::vector<std::string> metrics = {"E_rig", "E_str", "E_geo"};  ///< the metrics computed
+  /// E_geo is left out above this many tet vertices, with the reason in the
+  /// result (0: no limit; the unfold command's default is 20,000)
+  int geodesic_max_vertices = 0;
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;
   int threads = 0;

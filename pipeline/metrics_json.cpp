@@ -1,5 +1,6 @@
 #include "pipeline/metrics_json.h"
 
+#include <cmath>
 #include <ostream>
 
 #include "core/atomic_file.h"
@@ -17,7 +18,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                  {"beta", h.beta},
                                  {"energy", h.energy},
                                  {"edge_ratio", h.edge_ratio}});
-  // E_rig, E_str, E_geo not computed are NaN, written as null.
+  // E_rig, E_str, E_geo not computed are NaN, written as null; E_geo_skipped is
+  // null, or why E_geo was left out and how to ask for it.
   return JsonObject{
       {"metrics_computed", JsonArray(options.metrics.begin(), options.metrics.end())},
       {"E_rig", m.E_rig},
@@ -25,6 +27,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"E_str_exact", m.E_str_exact},
       {"E_geo", m.E_geo},
       {"E_geo_exact", m.E_geo_exact},
+      {"E_geo_skipped", m.E_geo_skipped.empty() ? Json(std::nan("")) : Json(m.E_geo_skipped)},
       {"edge_ratio", c.edge_ratio},
       {"inverted_tets", m.inverted_tets},
       {"final_energy", c.final_energy},
@@ -63,6 +66,9 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"seconds_unfold", r.seconds_unfold},
       {"seconds_lambda2", r.seconds_lambda2},
       {"seconds_cascade", r.seconds_cascade},
+      {"seconds_interior", r.seconds_interior},
+      {"seconds_integration", r.seconds_integration},
+      {"seconds_anchored", r.seconds_anchored},
       {"seconds_metrics", m.seconds},
       {"method", options.method},
       {"warnings", warnings},

@@ -199,7 +199,9 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, Unfold
   Q.topRows(num_surface) = result.cascade.positions;
   ArapSolveOptions place;
   place.num_fixed = num_surface;
+  const auto interior_start = std::chrono::steady_clock::now();
   result.cascade.positions = arap_solve(tet_graph, result.tets.V, std::move(Q), place);
+  result.seconds_interior = seconds_since(interior_start);
 }
 
 // tetrahedralize.shape: unfolded. The surface solve S first, then the tet mesh
@@ -234,8 +236,11 @@ void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options,
   const double lambda2 = fiedler_value(graph_laplacian(build_edge_graph(
       int(result.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)))));
   CascadeResult& c = result.cascade;
-  c.positions =
-      integrate_rotation_field(graph, result.tets.V, c.positions, lambda2, options.integrate);
+  IntegrateTimes times;
+  c.positions = integrate_rotation_field(graph, result.tets.V, c.positions, lambda2,
+                                         options.integrate, &times);
+  result.seconds_integration = times.integration;
+  result.seconds_anchored = times.anchored;
   c.edge_ratio = edge_ratio(graph, result.tets.V, c.positions);
   c.reached_band = in_band(c.edge_ratio, options.cascade.edge_ratio_band);
 }
@@ -263,13 +268,24 @@ CascadeResult lsmds_cascade_result(const EdgeGraph& graph, const Eigen::MatrixX3
 // Dijkstras of its own in parallel), they are computed on the other core
 // meanwhile, on one thread so that nothing waits on a shared core; the rows
 // must fit in 32 MB. Otherwise no future: E_geo after the solve, in parallel.
+// Why E_geo is left out though asked for (more tet vertices than
+// metrics.geodesic_max_vertices), and how to get it; "" when it is computed.
+std::string geodesic_skipped(const Options& options, int num_vertices) {
+  const int limit = options.geodesic_max_vertices;
+  if (!computes_metric(options, "E_geo") || limit == 0 || num_vertices <= limit) return "";
+  return "E_geo left out above " + std::to_string(limit) + " tet vertices (here " +
+         std::to_string(num_vertices) +
+         "); --metrics E_rig,E_str,E_geo (or metrics.geodesic_max_vertices: 0) computes it";
+}
+
 std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                               const Options& options) {
   const GeodesicErrorOptions& geo = options.geodesic_metric;
   const int n = graph.num_vertices;
   const double rows = n <= geo.exact_limit ? n : std::min(geo.sources, n);
-  if (!computes_metric(options, "E_geo") || options.method == "lsmds" || n < 2 ||
-      n >= kMinParallelRows || rows * n * sizeof(double) > (32 << 20))
+  if (!computes_metric(options, "E_geo") || !geodesic_skipped(options, n).empty() ||
+      options.method == "lsmds" || n < 2 || n >= kMinParallelRows ||
+      rows * n * sizeof(double) > (32 << 20))
     return {};
   return std::async(std::launch::async, [&graph, &P, geo] {
     omp_set_num_threads(1);
@@ -399,7 +415,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
     m.E_str = str.value;
     m.E_str_exact = str.exact;
   }
-  if (computes_metric(options, "E_geo")) {
+  m.E_geo_skipped = geodesic_skipped(options, int(P.rows()));
+  if (!m.E_geo_skipped.empty()) LOG(INFO) << m.E_geo_skipped;
+  if (computes_metric(options, "E_geo") && m.E_geo_skipped.empty()) {
     const GeodesicError geo = geodesic_rows.valid()
                                   ? geodesic_error_solve(geodesic_rows.get(), Q)
                                   : geodesic_error(graph, P, Q, options.geodesic_metric);

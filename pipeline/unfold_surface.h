@@ -23,7 +23,10 @@ struct UnfoldMetrics {
   bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
   double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
-  int inverted_tets = 0;    ///< tetrahedra whose orientation flipped (from how they were made)
+  /// why E_geo was left out though metrics.compute lists it (above
+  /// metrics.geodesic_max_vertices) and how to ask for it; empty otherwise
+  std::string E_geo_skipped;
+  int inverted_tets = 0;  ///< tetrahedra whose orientation flipped (from how they were made)
   double seconds = 0;
   /// E_rig's term of each tet vertex (RigidityError); NaN when E_rig is not computed
   Eigen::VectorXd rigidity_per_vertex;
@@ -61,9 +64,12 @@ struct UnfoldResult {
   int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
   double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
   CgStats cg;                 ///< iterative: what the CG global steps did
-  double seconds_lambda2 = 0;  ///< the solver's setup (AMG hierarchy included) and lambda_2
-  double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
-  double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
+  double seconds_lambda2 = 0;      ///< the solver's setup (AMG hierarchy included) and lambda_2
+  double seconds_cascade = 0;      ///< the cascade (its last solve, for domain: surface)
+  double seconds_unfold = 0;       ///< lambda_2 and the cascade, and what surrounds them
+  double seconds_interior = 0;     ///< domain: surface: the interior placed by ARAP
+  double seconds_integration = 0;  ///< integrate: the rotation field integrated (one step)
+  double seconds_anchored = 0;     ///< integrate: the anchored ARAP steps after it
   std::vector<std::string> warnings;
   CurveSkeleton skeleton;               ///< method scf: the input's curve skeleton, else empty
   Eigen::MatrixX3d skeleton_canonical;  ///< method scf: its straightened nodes, placed as canonical

@@ -3,10 +3,13 @@
 #include <glog/logging.h>
 
 #include <cmath>
+#include <vector>
 
 #include "core/errors.h"
 #include "core/parallel.h"
-#include "mesh/best_rotations.h"
+#include "geometry/best_rotation.h"
+#include "geometry/rotations.h"
+#include "mesh/cell_covariances.h"
 #include "solvers/anderson_acceleration.h"
 #include "solvers/sparse_ldlt.h"
 
@@ -29,7 +32,9 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     I.setIdentity();
     L += options.anchor * I;
   }
-  SparseLdlt ldlt;
+  // L is positive definite (every free vertex reaches a held one): supernodal
+  // LL^T, 3-4x faster to factorize than LDL^T on a 68k-vertex tet mesh.
+  SparseLdlt ldlt(SparseLdlt::Backend::kCholmodCholesky);
   ldlt.analyze(L);
   try {
     ldlt.factorize(L);
@@ -49,26 +54,59 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   const Eigen::RowVector3d centroid = Q.colwise().mean();
   const double radius = std::sqrt((Q.rowwise() - centroid).rowwise().squaredNorm().mean());
 
+  // The cells whose rotation or energy term moves with the free rows: the free
+  // vertices and their held neighbours. With the surface held (interior
+  // placement) that is a third of the tet mesh; the other cells' terms are a
+  // constant the steps cannot change.
+  std::vector<int> active;
+  for (int i = 0; i < n; ++i) {
+    bool moves = i >= num_fixed;
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1] && !moves; ++k)
+      moves = graph.neighbors[size_t(k)] >= num_fixed;
+    if (moves) active.push_back(i);
+  }
+  const int num_active = int(active.size());
+  const CellRestEdges rest =
+      cell_rest_edges(graph, P, std::vector<double>(size_t(graph.num_edges()), 1.0));
+
   // At X's best rotations R (per cell): B_i = sum_j (R_i + R_j)/2 (p_i - p_j), the
-  // right side's part that changes, and the energy the steps lower,
-  // 1/2 sum_i sum_{j in N_i} |x_i - x_j - R_i (p_i - p_j)|^2 + anchor |free rows - start|^2:
-  // the local step minimises it over R, the global step over the free rows
-  // (its gradient is 2 (L x - B) + 2 anchor (x - start)), so plain steps never raise it.
-  Rotations R;
-  Eigen::MatrixX3d B(n, 3);
+  // right side's part that changes (free rows), and the energy the steps lower,
+  // 1/2 sum_i sum_{j in N_i} |x_i - x_j - R_i (p_i - p_j)|^2 + anchor |free rows - start|^2
+  // (the active cells' terms: the others are constant): the local step minimises it
+  // over R, the global step over the free rows (its gradient is 2 (L x - B) +
+  // 2 anchor (x - start)), so plain steps never raise it. Each fit starts its
+  // rotations from the last fit's (cells turn little between steps).
+  Rotations R(size_t(n), Eigen::Matrix3d::Identity());
+  bool warm = false;
+  Eigen::MatrixX3d B(m, 3);
+  RowMatrixX3d x_rows;
   const auto fit = [&](const Eigen::MatrixX3d& X) {
-    best_rotations(graph, P, X, &R);
+    x_rows = X;
+#pragma omp parallel for schedule(static) if (num_active >= kMinParallelRows)
+    for (int a = 0; a < num_active; ++a) {
+      const int i = active[size_t(a)];
+      if (graph.degree(i) == 0) continue;
+      // sum_j e_ij (x_i - x_j)^T
+      Eigen::Matrix3d s = rest.weighted_laplacian_rest.row(i).transpose() * x_rows.row(i);
+      for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+        s.noalias() -=
+            rest.weighted_edges.row(k).transpose() * x_rows.row(graph.neighbors[size_t(k)]);
+      R[size_t(i)] = warm ? best_rotation(s, R[size_t(i)]) : best_rotation(s);
+    }
+    warm = true;
     double energy = 0;
-#pragma omp parallel for schedule(static) reduction(+ : energy) if (n >= kMinParallelRows)
-    for (int i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) reduction(+ : energy) if (num_active >= kMinParallelRows)
+    for (int a = 0; a < num_active; ++a) {
+      const int i = active[size_t(a)];
       Eigen::RowVector3d b = Eigen::RowVector3d::Zero();
       for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
         const int j = graph.neighbors[size_t(k)];
-        const Eigen::Vector3d e = (P.row(i) - P.row(j)).transpose();
-        b += (0.5 * (R[size_t(i)] + R[size_t(j)]) * e).transpose();
-        energy += 0.5 * (X.row(i) - X.row(j) - (R[size_t(i)] * e).transpose()).squaredNorm();
+        const Eigen::Vector3d e = rest.weighted_edges.row(k).transpose();
+        if (i >= num_fixed) b += (0.5 * (R[size_t(i)] + R[size_t(j)]) * e).transpose();
+        energy +=
+            0.5 * (x_rows.row(i) - x_rows.row(j) - (R[size_t(i)] * e).transpose()).squaredNorm();
       }
-      B.row(i) = b;
+      if (i >= num_fixed) B.row(i - num_fixed) = b;
     }
     return energy + options.anchor * (X.bottomRows(m) - start).squaredNorm();
   };
@@ -80,7 +118,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   while (it < options.max_iterations) {
     ++it;
     // d/dq_i of the energy = 0 for the free rows, R held.
-    ldlt.solve(fixed_rhs + B.bottomRows(m), &free);
+    ldlt.solve(fixed_rhs + B, &free);
     const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();
     const Eigen::MatrixX3d x = Q.bottomRows(m);
     bool plain = !accelerate;

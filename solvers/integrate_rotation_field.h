@@ -21,6 +21,12 @@ struct IntegrateOptions {
   double tolerance = 1e-4;  ///< the steps stop when they move less (relative to the radius)
 };
 
+/// Where integrate_rotation_field spent its time (wall seconds).
+struct IntegrateTimes {
+  double integration = 0;  ///< the first step: the rotation field integrated
+  double anchored = 0;     ///< the anchored steps after it
+};
+
 /// Integrates the rotation field of `Q` (best rotations from P, per vertex):
 /// one ARAP step from Q with one vertex held, then up to iterations - 1 ARAP
 /// steps anchored to that step's result with weight anchor * lambda2.
@@ -30,9 +36,11 @@ struct IntegrateOptions {
 /// @param lambda2 the anchor's unit, > 0: a lambda_2 (fiedler_value) of the shape, e.g.
 ///        of its surface's graph Laplacian, the same for every pose
 /// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0
+/// @param times   optional: the two parts' seconds
 /// @throws UsageError for mismatched sizes or negative options
 Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                           const Eigen::MatrixX3d& Q, double lambda2,
-                                          const IntegrateOptions& options);
+                                          const IntegrateOptions& options,
+                                          IntegrateTimes* times = nullptr);
 
 }  // namespace unfold

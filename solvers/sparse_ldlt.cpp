@@ -71,11 +71,13 @@ struct SparseLdlt::Impl {
 };
 
 SparseLdlt::SparseLdlt(Backend backend) : backend_(backend), impl_(new Impl) {
-  if (backend_ == Backend::kCholmod) {
+  if (backend_ != Backend::kEigen) {
     cholmod_start(&impl_->common);
     impl_->cholmod_started = true;
-    impl_->common.supernodal = CHOLMOD_SIMPLICIAL;  // supernodal is LL^T only: A is indefinite
-    impl_->common.final_ll = false;                 // keep LDL^T
+    // Supernodal is LL^T only: the simplicial LDL^T serves indefinite matrices.
+    const bool cholesky = backend_ == Backend::kCholmodCholesky;
+    impl_->common.supernodal = cholesky ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    impl_->common.final_ll = cholesky;
   }
 }
 
@@ -120,6 +122,13 @@ void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
     return;
   }
   m.copy_lower_values(A);
+  if (backend_ == Backend::kCholmodCholesky) {
+    // A pivot that is not positive stops LL^T there: L->minor < n.
+    if (!cholmod_factorize(m.A, m.L, &m.common) || m.L->minor < m.L->n)
+      throw NumericalError("SparseLdlt: not positive definite (CHOLMOD LL^T stopped at column " +
+                           std::to_string(m.L->minor) + ")");
+    return;
+  }
   // CHOLMOD's LDL^T does not stop at negative pivots; a zero one sets L->minor < n.
   if (!cholmod_factorize(m.A, m.L, &m.common) || m.L->minor < m.L->n)
     throw NumericalError("SparseLdlt: numeric factorization failed (CHOLMOD status " +

@@ -43,8 +43,10 @@ TEST(Cli, DemoRunWritesEveryOutput) {
   for (const char* key :
        {"\"E_rig\"", "\"E_str\"", "\"E_geo\"", "\"edge_ratio\"", "\"iterations\"", "\"cascades\"",
         "\"beta\"", "\"tet_vertices\"", "\"seconds_tetrahedralize\"", "\"seconds_unfold\"",
-        "\"tetrahedralization\": {\"route\": \"conforming\"", "\"intersecting_faces\": 0"})
+        "\"tetrahedralization\": {\"route\": \"conforming\"", "\"intersecting_faces\": 0",
+        "\"E_geo_skipped\": null"})
     EXPECT_NE(text.str().find(key), std::string::npos) << key;
+  EXPECT_EQ(text.str().find("\"E_geo\": null"), std::string::npos);  // below 20,000: computed
   EXPECT_TRUE(file_exists(tets));
 }
 
@@ -53,6 +55,24 @@ std::string file_bytes(const std::string& path) {
   std::stringstream bytes;
   bytes << in.rdbuf();
   return bytes.str();
+}
+
+// Above metrics.geodesic_max_vertices (unfold's default 20,000, lowered here so
+// that a small mesh is above it) E_geo is left out, and the summary line and
+// the JSON say so and how to ask for it; the other metrics are computed.
+TEST(Cli, EGeoIsLeftOutAboveTheVertexLimitAndSaysHowToAsk) {
+  const std::string out = temp("geo_limit.off"), json = temp("geo_limit.json");
+  const AppRun r = run_unfold("--demo_pose 1 --output " + out + " --metrics_json " + json +
+                              " --geodesic_max_vertices 1000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("E_geo left out above 1000 tet vertices"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--metrics E_rig,E_str,E_geo"), std::string::npos) << r.out;
+  const std::string text = file_bytes(json);
+  EXPECT_NE(text.find("\"E_geo\": null"), std::string::npos);
+  EXPECT_NE(text.find("\"E_geo_skipped\": \"E_geo left out above 1000 tet vertices"),
+            std::string::npos);
+  EXPECT_EQ(text.find("\"E_rig\": null"), std::string::npos);
+  EXPECT_EQ(text.find("\"E_str\": null"), std::string::npos);
 }
 
 TEST(Cli, SameInputConfigAndThreadsGiveBitIdenticalOutputs) {

@@ -1,0 +1,60 @@
+// The supernodal LL^T backend of SparseLdlt (what arap_solve factorizes its
+// positive definite systems with): the same solution as the LDL^T backends on
+// a positive definite matrix, and a NumericalError, not a wrong answer, on one
+// that is not.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "core/errors.h"
+#include "mesh/edge_graph.h"
+#include "solvers/sparse_ldlt.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+// The tet-mesh Laplacian of a bar plus `shift` I: positive definite for shift > 0,
+// singular at 0 (the constant vector), indefinite below.
+Eigen::SparseMatrix<double> shifted_laplacian(double shift) {
+  const TetMesh mesh = test::grid_tet_mesh(12, 4, 4, 0.5);
+  Eigen::SparseMatrix<double> L = graph_laplacian(build_edge_graph(int(mesh.V.rows()), mesh.T));
+  Eigen::SparseMatrix<double> I(L.rows(), L.cols());
+  I.setIdentity();
+  return L + shift * I;
+}
+
+TEST(SparseCholesky, SolvesLikeTheLdltBackends) {
+  const Eigen::SparseMatrix<double> A = shifted_laplacian(1e-3);
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  Eigen::MatrixX3d b(A.rows(), 3);
+  for (Eigen::Index i = 0; i < b.size(); ++i) b.data()[i] = normal(random);
+  Eigen::MatrixX3d x_llt, x_ldlt;
+  SparseLdlt llt(SparseLdlt::Backend::kCholmodCholesky), ldlt(SparseLdlt::Backend::kCholmod);
+  llt.analyze(A);
+  llt.factorize(A);
+  llt.solve(b, &x_llt);
+  ldlt.analyze(A);
+  ldlt.factorize(A);
+  ldlt.solve(b, &x_ldlt);
+  EXPECT_LT((A * x_llt - b).norm(), 1e-9 * b.norm());
+  EXPECT_LT((x_llt - x_ldlt).norm(), 1e-9 * x_ldlt.norm());
+  EXPECT_EQ(llt.negative_pivots(), 0);
+  // A new factorization with the same pattern (the analysis reused).
+  const Eigen::SparseMatrix<double> A2 = shifted_laplacian(1.0);
+  llt.factorize(A2);
+  llt.solve(b, &x_llt);
+  EXPECT_LT((A2 * x_llt - b).norm(), 1e-9 * b.norm());
+}
+
+TEST(SparseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
+  const Eigen::SparseMatrix<double> A = shifted_laplacian(-0.5);
+  SparseLdlt llt(SparseLdlt::Backend::kCholmodCholesky);
+  llt.analyze(A);
+  EXPECT_THROW(llt.factorize(A), NumericalError);
+}
+
+}  // namespace
+}  // namespace unfold
