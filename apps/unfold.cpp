@@ -213,7 +213,7 @@ int main(int argc, char** argv) {
   help.groups = {
       {"Input and output",
        {"input", "demo_pose", "tet_input", "output", "input_copy", "tet_output", "rest_tet_output",
-        "metrics_json", "convergence"}},
+        "metrics_json", "convergence", "skeleton_output", "canonical_skeleton_output"}},
       {"Method and config", {"config"}},
       {"Cascade", {}},
       {"Tetrahedralization", {}},

@@ -16,7 +16,7 @@ namespace {
 // its tets put back into the input are those tets taken back by the same
 // similarity, interior included, none inverted.
 TEST(TetrahedralizeUnfolded, TakesASimilarityBackExactly) {
-  const SurfaceMesh input = make_articulated_shape(ShapePose::preset(1), 24);
+  const SurfaceMesh input = make_articulated_shape(ShapePose::preset(1));
   const Eigen::Matrix3d R = test::random_rotation(5);
   const Eigen::RowVector3d t(1, -2, 3);
   const Eigen::MatrixX3d S = (2.5 * input.V * R.transpose()).rowwise() + t;
@@ -37,8 +37,8 @@ TEST(TetrahedralizeUnfolded, TakesASimilarityBackExactly) {
 // whatever the input. Here the "unfolded" shape is the rest pose, whose legs
 // are apart: no tet may have corners on both front legs' lower halves.
 TEST(TetrahedralizeUnfolded, JoinsNoPartsThatOnlyTouchInTheInput) {
-  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1), 32);
-  const SurfaceMesh apart = make_articulated_shape(ShapePose::rest(), 32);
+  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1));
+  const SurfaceMesh apart = make_articulated_shape(ShapePose::rest());
   // The lower front legs of the rest pose: below the knees, in front.
   const auto lower_front = [&](int i, double side) {
     return i < apart.V.rows() && apart.V(i, 2) < -0.9 && apart.V(i, 0) > 0.3 &&
@@ -64,7 +64,7 @@ TEST(TetrahedralizeUnfolded, JoinsNoPartsThatOnlyTouchInTheInput) {
 }
 
 TEST(TetrahedralizeUnfolded, RefusesAnUnfoldedShapeOfAnotherSize) {
-  const SurfaceMesh input = make_articulated_shape(ShapePose::rest(), 16);
+  const SurfaceMesh input = make_articulated_shape(ShapePose::rest());
   EXPECT_THROW(tetrahedralize_unfolded(input, input.V.topRows(10), TetOptions{}), UsageError);
 }
 

@@ -1,5 +1,7 @@
 #include "json_to_python.h"
 
+#include <cmath>
+
 namespace py = pybind11;
 
 namespace unfold::python {
@@ -7,7 +9,10 @@ namespace unfold::python {
 py::object to_python(const Json& value) {
   if (const auto* b = std::get_if<bool>(&value.value)) return py::bool_(*b);
   if (const auto* i = std::get_if<int64_t>(&value.value)) return py::int_(*i);
-  if (const auto* x = std::get_if<double>(&value.value)) return py::float_(*x);
+  // A non-finite double is null in the JSON file (JSON has no NaN): None here,
+  // so that the dict holds what the file holds (e.g. a metric not computed).
+  if (const auto* x = std::get_if<double>(&value.value))
+    return std::isfinite(*x) ? py::object(py::float_(*x)) : py::none();
   if (const auto* s = std::get_if<std::string>(&value.value)) return py::str(*s);
   if (const auto* a = std::get_if<JsonArray>(&value.value)) {
     py::list list;
