@@ -5,134 +5,135 @@
 #pragma once
 
 // X(flag, yaml path, member of unfold::Options, help)
-#define UNFOLD_CONFIG_KEYS(X)                                                                    \
-  X(method, "method", method,                                                                    \
-    "local_global (the paper's), ceres (L-BFGS); baselines dpmu, lsmds, scf (docs/baselines.md)") \
-  X(target_vertices, "simplify.target_vertices", target_vertices,                                \
-    "simplify the surface to about this many vertices first; 0 keeps all")                       \
-  X(tet_route, "tetrahedralize.route", tet.route,                                                \
-    "tetrahedralization route: auto (conforming unless the surface intersects itself, else "     \
-    "robust), conforming, robust")                                                               \
-  X(tet_quality, "tetrahedralize.quality", tet.quality,                                          \
-    "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                     \
-  X(tet_max_volume, "tetrahedralize.max_volume", tet.max_volume,                                 \
-    "TetGen bound on tetrahedron volume (-a), mesh units cubed; 0: no bound")                    \
-  X(fallback_surface_graph, "tetrahedralize.fallback_surface_graph", fallback_surface_graph,     \
-    "when no tet mesh can be made (TetGen fails, open surface), unfold on the surface's own "    \
-    "edge graph with a warning instead of failing")                                              \
-  X(tet_shape, "tetrahedralize.shape", tet_shape,                                                \
-    "domain: surface: tetrahedralize the input, or the surface solve's unfolded shape and put "  \
-    "its interior back into the input (unfolded: parts touching in the input stay apart)")       \
-  X(components, "components", components,                                                        \
-    "several connected components: refuse (error naming the count) or separately (each "         \
-    "unfolded on its own, put back together in input order)")                                    \
-  X(domain, "domain", domain,                                                                    \
-    "volume: the energy on the tet mesh (the paper's); surface: on the surface's vertices and "  \
-    "triangle edges, the interior following by ARAP (more pose-invariant, docs/method.md)")      \
-  X(integrate_iterations, "integrate.iterations", integrate.iterations,                          \
-    "after the cascade: ARAP steps on the whole tet mesh integrating its rotation field into a " \
-    "shape with the input's local detail (pose invariance, docs/method.md); 0: off")             \
-  X(integrate_anchor, "integrate.anchor", integrate.anchor,                                      \
-    "integrate.iterations: anchor of the steps after the first, in units of lambda_2 of the "    \
-    "surface's graph Laplacian (modes stiffer than this get the input's detail back, softer "    \
-    "ones keep the integrated pose)")                                                            \
-  X(integrate_tolerance, "integrate.tolerance", integrate.tolerance,                             \
-    "integrate.iterations: stop when a step moves every vertex less than this times the radius") \
-  X(beta_mode, "beta.mode", beta_mode,                                                           \
-    "relative: beta = value * n / lambda_2(L); absolute: beta = value")                          \
-  X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                             \
-  X(beta_raise, "beta.raise_to_bound", raise_beta_to_bound,                                      \
-    "raise a starting beta below the boundedness bound n/lambda_2 - 1 to just above it")         \
-  X(k_iter, "cascade.k_iter", cascade.k_iter, "iterations per cascade at most")                  \
-  X(epsilon, "cascade.epsilon", cascade.epsilon,                                                 \
-    "a cascade ends when the relative energy change is below this")                              \
-  X(num_cascades, "cascade.num", cascade.num_cascades, "cascades at most")                       \
-  X(beta_growth, "cascade.growth", cascade.growth, "beta factor from one cascade to the next")   \
-  X(edge_ratio_band, "cascade.edge_ratio_band", cascade.edge_ratio_band,                         \
-    "stop when the mean edge-length ratio is inside [low, high]")                                \
-  X(break_in_band, "cascade.break_in_band", cascade.break_in_band,                               \
-    "true: stop at the first iterate inside the band (the paper's Algorithm 1); false: finish "  \
-    "that cascade first (local_global)")                                                         \
-  X(anderson, "cascade.anderson", cascade.anderson,                                              \
-    "Anderson acceleration window of the local_global iterations; 0: plain iterations")          \
-  X(linear_solver, "linear_solver.method", linear_solver.method,                                 \
-    "global step: direct (sparse LDL^T), iterative (AMG-preconditioned CG) or auto "             \
-    "(iterative when one factorization would cost more than linear_solver.direct_max_gflop)")    \
-  X(direct_max_gflop, "linear_solver.direct_max_gflop", linear_solver.direct_max_gflop,          \
-    "auto: the direct solver while one factorization (AMD ordering) costs at most this many "    \
-    "GFlop")                                                                                     \
-  X(cg_tolerance, "linear_solver.cg_tolerance", linear_solver.cg_tolerance,                      \
-    "iterative: relative residual each global step reaches")                                     \
-  X(cg_forcing, "linear_solver.cg_forcing", linear_solver.cg_forcing,                            \
-    "iterative: or each global step reduces its warm start's residual by this factor "           \
-    "(0: always cg_tolerance)")                                                                  \
-  X(cg_max_iterations, "linear_solver.cg_max_iterations", linear_solver.cg_max_iterations,       \
-    "iterative: CG iterations per global step at most")                                          \
-  X(stretch_weight, "stretch.weight", energy.stretch_weight,                                     \
-    "weight k of the stretch term (paper: 1)")                                                   \
-  X(stretch_masses, "stretch.masses", energy.stretch_masses,                                     \
-    "stretch term's vertex weights: uniform (paper) or lumped (each vertex's share of the "      \
-    "volume or, with domain: surface, of the area: independent of where the mesh is dense)")     \
-  X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")   \
-  X(arap_weights, "arap.weights", energy.arap_weights,                                           \
-    "ARAP edge weights w_ij: uniform (paper) or cotangent")                                      \
-  X(user_pairs, "user_pairs.file", energy.user_pairs_file,                                       \
-    "pair constraints (Eq. 11), CSV or YAML rows i, j, tx, ty, tz; empty: none")                 \
-  X(user_pairs_gamma, "user_pairs.gamma", energy.user_pairs_gamma,                               \
-    "weight gamma of the pair constraints relative to beta (paper: 1)")                          \
-  X(volume_weight, "volume.weight", energy.volume_weight,                                        \
-    "tet volume preservation relative to beta; 0 = off; needs method: ceres")                    \
-  X(edge_length_weight, "edge_length.weight", energy.edge_length_weight,                         \
-    "edge-length springs relative to beta (DPMU); 0 = off; needs method: ceres or dpmu")         \
-  X(lsmds_exact_limit, "lsmds.exact_limit", lsmds.exact_limit,                                   \
-    "method lsmds: all-pairs stress up to this many tet vertices, landmarks above")              \
-  X(lsmds_landmarks, "lsmds.landmarks", lsmds.landmarks,                                         \
-    "method lsmds: landmark geodesic rows above the exact limit")                                \
-  X(lsmds_max_iterations, "lsmds.max_iterations", lsmds.max_iterations,                          \
-    "method lsmds: Guttman transforms at most")                                                  \
-  X(lsmds_tolerance, "lsmds.tolerance", lsmds.tolerance,                                         \
-    "method lsmds: stop when the relative stress decrease is below this")                        \
-  X(scf_quality_speed_tradeoff, "scf.quality_speed_tradeoff", scf.skeleton.quality_speed_tradeoff,\
-    "method scf: CGAL skeleton w_H (larger: finer and slower)")                                  \
-  X(scf_medially_centered_speed_tradeoff, "scf.medially_centered_speed_tradeoff", scf.skeleton.medially_centered_speed_tradeoff,\
-    "method scf: CGAL skeleton w_M (larger: better centred)")                                    \
-  X(scf_max_iterations, "scf.max_iterations", scf.skeleton.max_iterations,                       \
-    "method scf: skeleton contraction steps at most")                                            \
-  X(scf_min_edge_length, "scf.min_edge_length", scf.skeleton.min_edge_length,                    \
-    "method scf: skeleton edges shorter than this times the diameter collapse")                  \
-  X(scf_mds_iterations, "scf.mds_iterations", scf.mds_iterations,                                \
-    "method scf: Guttman transforms on the skeleton at most")                                    \
-  X(scf_blend_radius, "scf.blend_radius", scf.blend_radius,                                      \
-    "method scf: skinning blend radius along the skeleton, times the diameter")                  \
-  X(scf_arap_anchor, "scf.arap_anchor", scf.arap_anchor,                                         \
-    "method scf: ARAP refinement's pull to the skinned positions")                               \
-  X(scf_arap_iterations, "scf.arap_iterations", scf.arap_iterations,                             \
-    "method scf: ARAP refinement steps at most; 0: skinning alone")                              \
-  X(ceres_line_search_direction_type, "ceres.line_search_direction_type",                        \
-    ceres.line_search_direction_type,                                                            \
-    "LBFGS, BFGS, NONLINEAR_CONJUGATE_GRADIENT or STEEPEST_DESCENT")                             \
-  X(ceres_max_num_iterations, "ceres.max_num_iterations", ceres.max_num_iterations,              \
-    "Ceres iterations per cascade at most")                                                      \
-  X(ceres_function_tolerance, "ceres.function_tolerance", ceres.function_tolerance,              \
-    "Ceres stops when the relative cost change is below this")                                   \
-  X(ceres_gradient_tolerance, "ceres.gradient_tolerance", ceres.gradient_tolerance,              \
-    "Ceres stops when the max gradient norm is below this")                                      \
-  X(ceres_parameter_tolerance, "ceres.parameter_tolerance", ceres.parameter_tolerance,           \
-    "Ceres stops when the relative step is below this")                                          \
-  X(ceres_max_lbfgs_rank, "ceres.max_lbfgs_rank", ceres.max_lbfgs_rank,                          \
-    "L-BFGS memory (Ceres max_lbfgs_rank)")                                                      \
-  X(metrics, "metrics.compute", metrics,                                                         \
-    "metrics to compute: a list of E_rig, E_str, E_geo (E_geo costs the most), all or none; "    \
-    "one not computed is null in the metrics JSON and empty in results.csv")                     \
-  X(stretch_exact_limit, "metrics.stretch_exact_limit", stretch_metric.exact_limit,              \
-    "E_str over all pairs up to this many vertices, sampled above")                              \
-  X(stretch_samples, "metrics.stretch_samples", stretch_metric.sample_pairs,                     \
-    "random pairs for E_str above the exact limit")                                              \
-  X(geodesic_exact_limit, "metrics.geodesic_exact_limit", geodesic_metric.exact_limit,           \
-    "E_geo from all-pairs geodesics up to this many vertices")                                   \
-  X(geodesic_landmarks, "metrics.geodesic_landmarks", geodesic_metric.sources,                   \
-    "geodesic source vertices for E_geo above the exact limit")                                  \
-  X(geodesic_max_vertices, "metrics.geodesic_max_vertices", geodesic_max_vertices,             \
-    "E_geo left out above this many tet vertices (0: no limit; unfold: 20000 unless --metrics "   \
-    "is given)")                                                                                 \
+#define UNFOLD_CONFIG_KEYS(X)                                                                      \
+  X(method, "method", method,                                                                      \
+    "local_global (the paper's), ceres (L-BFGS); baselines dpmu, lsmds, scf (docs/baselines.md)")  \
+  X(target_vertices, "simplify.target_vertices", target_vertices,                                  \
+    "simplify the surface to about this many vertices first; 0 keeps all")                         \
+  X(tet_route, "tetrahedralize.route", tet.route,                                                  \
+    "tetrahedralization route: auto (conforming unless the surface intersects itself, else "       \
+    "robust), conforming, robust")                                                                 \
+  X(tet_quality, "tetrahedralize.quality", tet.quality,                                            \
+    "TetGen radius-edge quality bound (-q); 0 turns quality refinement off")                       \
+  X(tet_max_volume, "tetrahedralize.max_volume", tet.max_volume,                                   \
+    "TetGen bound on tetrahedron volume (-a), mesh units cubed; 0: no bound")                      \
+  X(fallback_surface_graph, "tetrahedralize.fallback_surface_graph", fallback_surface_graph,       \
+    "when no tet mesh can be made (TetGen fails, open surface), unfold on the surface's own "      \
+    "edge graph with a warning instead of failing")                                                \
+  X(tet_shape, "tetrahedralize.shape", tet_shape,                                                  \
+    "domain: surface: tetrahedralize the input, or the surface solve's unfolded shape and put "    \
+    "its interior back into the input (unfolded: parts touching in the input stay apart)")         \
+  X(components, "components", components,                                                          \
+    "several connected components: refuse (error naming the count) or separately (each "           \
+    "unfolded on its own, put back together in input order)")                                      \
+  X(domain, "domain", domain,                                                                      \
+    "volume: the energy on the tet mesh (the paper's); surface: on the surface's vertices and "    \
+    "triangle edges, the interior following by ARAP (more pose-invariant, docs/method.md)")        \
+  X(integrate_iterations, "integrate.iterations", integrate.iterations,                            \
+    "after the cascade: ARAP steps on the whole tet mesh integrating its rotation field into a "   \
+    "shape with the input's local detail (pose invariance, docs/method.md); 0: off")               \
+  X(integrate_anchor, "integrate.anchor", integrate.anchor,                                        \
+    "integrate.iterations: anchor of the steps after the first, in units of lambda_2 of the "      \
+    "surface's graph Laplacian (modes stiffer than this get the input's detail back, softer "      \
+    "ones keep the integrated pose)")                                                              \
+  X(integrate_tolerance, "integrate.tolerance", integrate.tolerance,                               \
+    "integrate.iterations: stop when a step moves every vertex less than this times the radius")   \
+  X(beta_mode, "beta.mode", beta_mode,                                                             \
+    "relative: beta = value * n / lambda_2(L); absolute: beta = value")                            \
+  X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                               \
+  X(beta_raise, "beta.raise_to_bound", raise_beta_to_bound,                                        \
+    "raise a starting beta below the boundedness bound n/lambda_2 - 1 to just above it")           \
+  X(k_iter, "cascade.k_iter", cascade.k_iter, "iterations per cascade at most")                    \
+  X(epsilon, "cascade.epsilon", cascade.epsilon,                                                   \
+    "a cascade ends when the relative energy change is below this")                                \
+  X(num_cascades, "cascade.num", cascade.num_cascades, "cascades at most")                         \
+  X(beta_growth, "cascade.growth", cascade.growth, "beta factor from one cascade to the next")     \
+  X(edge_ratio_band, "cascade.edge_ratio_band", cascade.edge_ratio_band,                           \
+    "stop when the mean edge-length ratio is inside [low, high]")                                  \
+  X(break_in_band, "cascade.break_in_band", cascade.break_in_band,                                 \
+    "true: stop at the first iterate inside the band (the paper's Algorithm 1); false: finish "    \
+    "that cascade first (local_global)")                                                           \
+  X(anderson, "cascade.anderson", cascade.anderson,                                                \
+    "Anderson acceleration window of the local_global iterations; 0: plain iterations")            \
+  X(linear_solver, "linear_solver.method", linear_solver.method,                                   \
+    "global step: direct (sparse LDL^T), iterative (AMG-preconditioned CG) or auto "               \
+    "(iterative when one factorization would cost more than linear_solver.direct_max_gflop)")      \
+  X(direct_max_gflop, "linear_solver.direct_max_gflop", linear_solver.direct_max_gflop,            \
+    "auto: the direct solver while one factorization (AMD ordering) costs at most this many "      \
+    "GFlop")                                                                                       \
+  X(cg_tolerance, "linear_solver.cg_tolerance", linear_solver.cg_tolerance,                        \
+    "iterative: relative residual each global step reaches")                                       \
+  X(cg_forcing, "linear_solver.cg_forcing", linear_solver.cg_forcing,                              \
+    "iterative: or each global step reduces its warm start's residual by this factor "             \
+    "(0: always cg_tolerance)")                                                                    \
+  X(cg_max_iterations, "linear_solver.cg_max_iterations", linear_solver.cg_max_iterations,         \
+    "iterative: CG iterations per global step at most")                                            \
+  X(stretch_weight, "stretch.weight", energy.stretch_weight,                                       \
+    "weight k of the stretch term (paper: 1)")                                                     \
+  X(stretch_masses, "stretch.masses", energy.stretch_masses,                                       \
+    "stretch term's vertex weights: uniform (paper) or lumped (each vertex's share of the "        \
+    "volume or, with domain: surface, of the area: independent of where the mesh is dense)")       \
+  X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")     \
+  X(arap_weights, "arap.weights", energy.arap_weights,                                             \
+    "ARAP edge weights w_ij: uniform (paper) or cotangent")                                        \
+  X(user_pairs, "user_pairs.file", energy.user_pairs_file,                                         \
+    "pair constraints (Eq. 11), CSV or YAML rows i, j, tx, ty, tz; empty: none")                   \
+  X(user_pairs_gamma, "user_pairs.gamma", energy.user_pairs_gamma,                                 \
+    "weight gamma of the pair constraints relative to beta (paper: 1)")                            \
+  X(volume_weight, "volume.weight", energy.volume_weight,                                          \
+    "tet volume preservation relative to beta; 0 = off; needs method: ceres")                      \
+  X(edge_length_weight, "edge_length.weight", energy.edge_length_weight,                           \
+    "edge-length springs relative to beta (DPMU); 0 = off; needs method: ceres or dpmu")           \
+  X(lsmds_exact_limit, "lsmds.exact_limit", lsmds.exact_limit,                                     \
+    "method lsmds: all-pairs stress up to this many tet vertices, landmarks above")                \
+  X(lsmds_landmarks, "lsmds.landmarks", lsmds.landmarks,                                           \
+    "method lsmds: landmark geodesic rows above the exact limit")                                  \
+  X(lsmds_max_iterations, "lsmds.max_iterations", lsmds.max_iterations,                            \
+    "method lsmds: Guttman transforms at most")                                                    \
+  X(lsmds_tolerance, "lsmds.tolerance", lsmds.tolerance,                                           \
+    "method lsmds: stop when the relative stress decrease is below this")                          \
+  X(scf_quality_speed_tradeoff, "scf.quality_speed_tradeoff", scf.skeleton.quality_speed_tradeoff, \
+    "method scf: CGAL skeleton w_H (larger: finer and slower)")                                    \
+  X(scf_medially_centered_speed_tradeoff, "scf.medially_centered_speed_tradeoff",                  \
+    scf.skeleton.medially_centered_speed_tradeoff,                                                 \
+    "method scf: CGAL skeleton w_M (larger: better centred)")                                      \
+  X(scf_max_iterations, "scf.max_iterations", scf.skeleton.max_iterations,                         \
+    "method scf: skeleton contraction steps at most")                                              \
+  X(scf_min_edge_length, "scf.min_edge_length", scf.skeleton.min_edge_length,                      \
+    "method scf: skeleton edges shorter than this times the diameter collapse")                    \
+  X(scf_mds_iterations, "scf.mds_iterations", scf.mds_iterations,                                  \
+    "method scf: Guttman transforms on the skeleton at most")                                      \
+  X(scf_blend_radius, "scf.blend_radius", scf.blend_radius,                                        \
+    "method scf: skinning blend radius along the skeleton, times the diameter")                    \
+  X(scf_arap_anchor, "scf.arap_anchor", scf.arap_anchor,                                           \
+    "method scf: ARAP refinement's pull to the skinned positions")                                 \
+  X(scf_arap_iterations, "scf.arap_iterations", scf.arap_iterations,                               \
+    "method scf: ARAP refinement steps at most; 0: skinning alone")                                \
+  X(ceres_line_search_direction_type, "ceres.line_search_direction_type",                          \
+    ceres.line_search_direction_type,                                                              \
+    "LBFGS, BFGS, NONLINEAR_CONJUGATE_GRADIENT or STEEPEST_DESCENT")                               \
+  X(ceres_max_num_iterations, "ceres.max_num_iterations", ceres.max_num_iterations,                \
+    "Ceres iterations per cascade at most")                                                        \
+  X(ceres_function_tolerance, "ceres.function_tolerance", ceres.function_tolerance,                \
+    "Ceres stops when the relative cost change is below this")                                     \
+  X(ceres_gradient_tolerance, "ceres.gradient_tolerance", ceres.gradient_tolerance,                \
+    "Ceres stops when the max gradient norm is below this")                                        \
+  X(ceres_parameter_tolerance, "ceres.parameter_tolerance", ceres.parameter_tolerance,             \
+    "Ceres stops when the relative step is below this")                                            \
+  X(ceres_max_lbfgs_rank, "ceres.max_lbfgs_rank", ceres.max_lbfgs_rank,                            \
+    "L-BFGS memory (Ceres max_lbfgs_rank)")                                                        \
+  X(metrics, "metrics.compute", metrics,                                                           \
+    "metrics to compute: a list of E_rig, E_str, E_geo (E_geo costs the most), all or none; "      \
+    "one not computed is null in the metrics JSON and empty in results.csv")                       \
+  X(stretch_exact_limit, "metrics.stretch_exact_limit", stretch_metric.exact_limit,                \
+    "E_str over all pairs up to this many vertices, sampled above")                                \
+  X(stretch_samples, "metrics.stretch_samples", stretch_metric.sample_pairs,                       \
+    "random pairs for E_str above the exact limit")                                                \
+  X(geodesic_exact_limit, "metrics.geodesic_exact_limit", geodesic_metric.exact_limit,             \
+    "E_geo from all-pairs geodesics up to this many vertices")                                     \
+  X(geodesic_landmarks, "metrics.geodesic_landmarks", geodesic_metric.sources,                     \
+    "geodesic source vertices for E_geo above the exact limit")                                    \
+  X(geodesic_max_vertices, "metrics.geodesic_max_vertices", geodesic_max_vertices,                 \
+    "E_geo left out above this many tet vertices (0: no limit; unfold: 20000 unless --metrics "    \
+    "is given)")                                                                                   \
   X(threads, "threads", threads, "worker threads; 0 uses every core")

@@ -228,11 +228,11 @@ void validate_options(const Options& o) {
           "must be volume or surface, got '" + o.domain + "'");
   require(o.tet_shape == "input" || o.tet_shape == "unfolded", "tetrahedralize.shape",
           "must be input or unfolded, got '" + o.tet_shape + "'");
-  require(o.tet_shape == "input" ||
-              (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
-          "tetrahedralize.shape",
-          "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method "
-          "other than lsmds and scf");
+  require(
+      o.tet_shape == "input" || (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
+      "tetrahedralize.shape",
+      "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method "
+      "other than lsmds and scf");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
