@@ -91,7 +91,8 @@ TEST(Rectilinearity, ARotatedBoxIsFoundAxisAlignedAndASphereIsNot) {
   const SurfaceMesh sphere = test::uv_sphere(24, 32);
   const Eigen::MatrixX3i G = triangulate_faces(sphere);
   EXPECT_LT(rectilinearity(sphere.V, G, rectilinearity_orientation(sphere.V, G)), 0.3);
-  EXPECT_THROW(rectilinearity(Eigen::MatrixX3d::Zero(3, 3), Eigen::MatrixX3i(F.topRows(1)),
+  // A zero-area mesh: one triangle on three coincident vertices.
+  EXPECT_THROW(rectilinearity(Eigen::MatrixX3d::Zero(3, 3), Eigen::RowVector3i(0, 1, 2),
                               Eigen::Matrix3d::Identity()),
                UsageError);
 }
