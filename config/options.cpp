@@ -226,13 +226,15 @@ void validate_options(const Options& o) {
           "must be refuse or separately, got '" + o.components + "'");
   require(o.domain == "volume" || o.domain == "surface", "domain",
           "must be volume or surface, got '" + o.domain + "'");
-  require(o.tet_shape == "input" || o.tet_shape == "unfolded", "tetrahedralize.shape",
-          "must be input or unfolded, got '" + o.tet_shape + "'");
+  require(o.tet_shape == "input" || o.tet_shape == "unfolded" || o.tet_shape == "auto",
+          "tetrahedralize.shape", "must be input, unfolded or auto, got '" + o.tet_shape + "'");
   require(
       o.tet_shape == "input" || (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
       "tetrahedralize.shape",
-      "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method "
-      "other than lsmds and scf");
+      "unfolded and auto need domain: surface (the surface solve they tetrahedralize) and a "
+      "method other than lsmds and scf");
+  require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
+          "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
@@ -306,6 +308,11 @@ void validate_options(const Options& o) {
 bool tets_from_unfolded(const Options& options) {
   return options.tet_shape == "unfolded" && options.domain == "surface" &&
          options.method != "lsmds" && options.method != "scf";
+}
+
+bool tets_from_unfolded_on_contact(const Options& options) {
+  return options.tet_shape == "auto" && options.domain == "surface" && options.method != "lsmds" &&
+         options.method != "scf";
 }
 
 bool computes_metric(const Options& options, const std::string& name) {

@@ -27,8 +27,12 @@ struct Options {
   std::string components = "refuse";    ///< several components: "refuse" or "separately"
   std::string domain = "volume";        ///< "volume" (tet mesh, the paper's) or "surface"
   /// domain surface: the tet mesh of the "input" or of the surface solve ("unfolded",
-  /// which joins no parts that touch in the input; solvers/tetrahedralize_unfolded.h)
+  /// which joins no parts that touch in the input; solvers/tetrahedralize_unfolded.h),
+  /// or "auto": unfolded where the input's tets bridge a contact, else input
   std::string tet_shape = "input";
+  /// shape auto: a tet edge bridges a contact when its ends are farther apart
+  /// along the surface than this times sqrt(area) (solvers/contact_bridges.h)
+  double contact_geodesic = 0.1;
   std::string beta_mode = "relative";
   double beta_value = 1.5;
   bool raise_beta_to_bound = true;    ///< a starting beta below the bound is raised above it
@@ -62,8 +66,12 @@ void validate_options(const Options& options);
 bool computes_metric(const Options& options, const std::string& name);
 
 /// Whether the tet mesh is made from the surface solve's unfolded shape
-/// (tetrahedralize.shape: unfolded with domain: surface), not from the input.
+/// whatever the input (tetrahedralize.shape: unfolded with domain: surface).
 bool tets_from_unfolded(const Options& options);
+
+/// Whether the input's tets are made and then, if they bridge a contact, the
+/// unfolded shape's instead (tetrahedralize.shape: auto with domain: surface).
+bool tets_from_unfolded_on_contact(const Options& options);
 
 /// The options as a YAML document with every key (the effective configuration).
 std::string options_to_yaml(const Options& options);

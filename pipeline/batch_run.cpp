@@ -137,7 +137,7 @@ std::optional<BatchRow> read_row_file(const std::string& path) {
 std::string preparation_key(const Options& o) {
   std::ostringstream s;
   s << o.target_vertices << '|' << o.tet.route << '|' << std::setprecision(17) << o.tet.quality
-    << '|' << tets_from_unfolded(o);
+    << '|' << o.tet.max_volume << '|' << o.fallback_surface_graph << '|' << tets_from_unfolded(o);
   return s.str();
 }
 

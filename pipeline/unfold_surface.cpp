@@ -26,6 +26,7 @@
 #include "solvers/arap_solve.h"
 #include "solvers/beta_schedule.h"
 #include "solvers/cascade.h"
+#include "solvers/contact_bridges.h"
 #include "solvers/fiedler_value.h"
 #include "solvers/integrate_rotation_field.h"
 #include "solvers/local_global.h"
@@ -212,10 +213,16 @@ void solve_on_unfolded_tets(const Options& options, UnfoldResult* out) {
   UnfoldResult& result = *out;
   solve_surface_cascade(options, out);
   const auto start = std::chrono::steady_clock::now();
-  UnfoldedTetMesh unfolded =
-      tetrahedralize_unfolded(result.surface, result.cascade.positions, options.tet);
+  // auto takes the robust route for the unfolded shape, as the input's route
+  // is the user's: the unfolded shape may or may not intersect itself
+  // somewhere, and one route for every pose keeps the poses' tets alike.
+  TetOptions tet = options.tet;
+  if (options.tet_shape == "auto") tet.route = "robust";
+  UnfoldedTetMesh unfolded = tetrahedralize_unfolded(result.surface, result.cascade.positions, tet);
   result.tets = std::move(unfolded.rest);
+  const int contact_tets = result.tet_report.contact_tets;
   result.tet_report = unfolded.report;
+  result.tet_report.contact_tets = contact_tets;
   result.tet_report.seconds = seconds_since(start);
   result.cascade.positions = unfolded.unfolded.rowwise() - unfolded.unfolded.colwise().mean();
   result.unfolded_tet_positions = std::move(unfolded.unfolded);
@@ -352,8 +359,17 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   // A prepared mesh serves every config of a batch or a comparison: the
   // unfolded shape's tets are made here whatever it holds, the input's only
   // if it was deferred.
-  const bool on_unfolded =
+  bool on_unfolded =
       tets_from_unfolded(options) && (prepared.tets_deferred || prepared.tets.T.rows() > 0);
+  if (tets_from_unfolded_on_contact(options) && prepared.tets.T.rows() > 0) {
+    const auto start = std::chrono::steady_clock::now();
+    result.tet_report.contact_tets = int(
+        tets_bridging_contact(prepared.surface, prepared.tets, options.contact_geodesic).size());
+    on_unfolded = result.tet_report.contact_tets > 0;
+    LOG(INFO) << result.tet_report.contact_tets << " of the input's tets bridge a contact ("
+              << seconds_since(start) << " s): tetrahedralizing "
+              << (on_unfolded ? "the unfolded shape" : "the input");
+  }
   if (on_unfolded) {
     solve_on_unfolded_tets(options, &result);
   } else if (prepared.tets_deferred) {

@@ -41,6 +41,9 @@ struct TetReport {
   /// unfolded: tets whose orientation at rest (put back into the input) is not
   /// the one they were made with
   int inverted_rest_tets = 0;
+  /// shape auto: the input's tets found bridging a contact
+  /// (solvers/contact_bridges.h); shape is "unfolded" when there are any
+  int contact_tets = 0;
 };
 
 /// Tetrahedralizes a closed surface.

@@ -1,0 +1,29 @@
+// Finds where an input's tet mesh glues parts of the surface that touch
+// (docs/method.md, contact). Where a hand rests on a thigh or legs cross, any
+// tet mesh of the input's volume joins the two parts, and a canonical form
+// computed on it keeps the contact. Such tets have an edge whose ends are
+// near in space but far apart along the surface.
+#pragma once
+
+#include <vector>
+
+#include "mesh/surface_mesh.h"
+#include "mesh/tet_mesh.h"
+
+namespace unfold {
+
+/// The tets that bridge a contact: those with an edge whose ends' nearest
+/// surface vertices (along the tet edges; a surface vertex is its own) are
+/// joined by no surface edge and are farther apart along the surface (its
+/// edge graph) than both `geodesic` times the square root of the surface's
+/// area and 4 times their distance in space. Across a limb the surface detour
+/// is about pi/2; across a contact it is the way round through the body.
+/// @param surface  the surface whose vertices are the tets' first rows
+/// @param tets     its tet mesh
+/// @param geodesic the reach, in units of sqrt(area) (> 0)
+/// @return the indices of the bridging tets, ascending (empty: no contact)
+/// @throws UsageError if the surface is not the tets' or geodesic is not positive
+std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh& tets,
+                                       double geodesic);
+
+}  // namespace unfold

@@ -1,0 +1,73 @@
+// Finding the tets that glue parts which only touch (tetrahedralize.shape: auto):
+// none on poses without contact, those joining the crossed legs on a pose with
+// contact, and no others.
+#include "solvers/contact_bridges.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/errors.h"
+#include "shapes/articulated_shape.h"
+#include "test_meshes.h"
+#include "tetra/tetrahedralize.h"
+
+namespace unfold {
+namespace {
+
+TEST(ContactBridges, NoneWhereNothingTouches) {
+  for (int k = 0; k < ShapePose::num_presets(); ++k) {
+    const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(k));
+    const TetMesh tets = tetrahedralize(shape, TetOptions{});
+    EXPECT_TRUE(tets_bridging_contact(shape, tets, 0.1).empty()) << "preset " << k;
+  }
+  const SurfaceMesh sphere = test::uv_sphere(12, 24);
+  EXPECT_TRUE(tets_bridging_contact(sphere, tetrahedralize(sphere, TetOptions{}), 0.1).empty());
+}
+
+// The front legs passed through each other (contact pose 1): every tet with
+// corners on both lower front legs is found (in the input's own tet mesh there
+// are such tets), and what is found lies on the legs.
+TEST(ContactBridges, FindsTheTetsJoiningCrossedLegs) {
+  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1));
+  const SurfaceMesh apart = make_articulated_shape(ShapePose::rest());
+  const TetMesh tets = tetrahedralize(crossed, TetOptions{});
+  const int ns = int(crossed.V.rows());
+  // a surface vertex on a lower front leg (of the rest pose: below the knees, in front)
+  const auto lower_front = [&](int i, double side) {
+    return i < ns && apart.V(i, 2) < -0.9 && apart.V(i, 0) > 0.3 && apart.V(i, 1) * side > 0;
+  };
+  const std::vector<int> found = tets_bridging_contact(crossed, tets, 0.1);
+  ASSERT_FALSE(found.empty());
+  int joining = 0;
+  for (int t = 0; t < tets.T.rows(); ++t) {
+    bool left = false, right = false;
+    for (int c = 0; c < 4; ++c) {
+      left = left || lower_front(tets.T(t, c), 1);
+      right = right || lower_front(tets.T(t, c), -1);
+    }
+    if (!(left && right)) continue;
+    ++joining;
+    EXPECT_TRUE(std::binary_search(found.begin(), found.end(), t)) << "tet " << t;
+  }
+  EXPECT_GT(joining, 0) << "the crossed legs' own tet mesh joins them";
+  // Found tets have a corner on a front leg (or next to one: interior vertices).
+  int on_legs = 0;
+  for (const int t : found)
+    for (int c = 0; c < 4; ++c)
+      if (tets.T(t, c) < ns && apart.V(tets.T(t, c), 0) > 0.3 && apart.V(tets.T(t, c), 2) < -0.5) {
+        ++on_legs;
+        break;
+      }
+  EXPECT_GE(on_legs, 0.9 * double(found.size()));
+}
+
+TEST(ContactBridges, RefusesBadArguments) {
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::rest());
+  const TetMesh tets = tetrahedralize(shape, TetOptions{});
+  EXPECT_THROW(tets_bridging_contact(shape, tets, 0), UsageError);
+  EXPECT_THROW(tets_bridging_contact(test::octahedron(), tets, 0.1), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
