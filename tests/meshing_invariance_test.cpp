@@ -32,9 +32,9 @@ std::vector<int> front_half(const SurfaceMesh& mesh) {
   return front;
 }
 
-// Measured on the three presets and the rest pose (docs/method.md): 0.004-0.010
-// with these options, 0.07-0.09 with uniform stretch weights; the paper's config
-// 0.07, or 0.03 with lumped masses.
+// Measured this way on the rest pose and the three presets (docs/method.md):
+// 0.004-0.005 with these options, 0.072-0.073 with uniform stretch weights
+// (configs/invariant.yaml as it is); the paper's config 0.042-0.043.
 TEST(MeshingInvariance, RefiningHalfTheAnimalBarelyMovesItsCanonicalForm) {
   const SurfaceMesh mesh = make_articulated_shape(ShapePose::preset(0));
   const SurfaceMesh refined = refine_faces(mesh, front_half(mesh));
