@@ -24,7 +24,7 @@
     "domain: surface: tetrahedralize the input, or the surface solve's unfolded shape and put "    \
     "its interior back into the input (unfolded: parts touching in the input stay apart), or "     \
     "auto: unfolded where the input's tets bridge a contact, else input")                          \
-  X(contact_geodesic, "tetrahedralize.contact_geodesic", contact_geodesic,                        \
+  X(contact_geodesic, "tetrahedralize.contact_geodesic", contact_geodesic,                         \
     "shape auto: a tet edge bridges a contact when its ends are farther apart along the surface "  \
     "than this times sqrt(area) and 4 times their distance (docs/method.md, contact)")             \
   X(components, "components", components,                                                          \

@@ -167,6 +167,30 @@ EnergyTerms probe_terms(EnergyOptions options) {
 
 }  // namespace
 
+Options::Options() {
+  domain = "surface";
+  tet_shape = "auto";
+  beta_value = 1.25;
+  cascade.num_cascades = 1;  // one beta, solved to convergence
+  cascade.k_iter = 300;
+  cascade.epsilon = 1e-7;
+  cascade.break_in_band = false;
+  cascade.anderson = 5;
+  integrate.iterations = 60;
+  energy.stretch_masses = "lumped";
+}
+
+Options paper_options() {
+  Options paper;
+  paper.domain = "volume";
+  paper.tet_shape = "input";
+  paper.beta_value = 1.5;
+  paper.cascade = CascadeOptions{};
+  paper.integrate = IntegrateOptions{};
+  paper.energy.stretch_masses = "uniform";
+  return paper;
+}
+
 Options load_options(const std::string& config_path,
                      const std::map<std::string, std::string>& overrides) {
   Options options;
@@ -187,6 +211,14 @@ Options load_options(const std::string& config_path,
     }
     if (!root.IsNull()) {
       if (!root.IsMap()) throw UsageError("config file '" + config_path + "' is not a mapping");
+      if (const YAML::Node base = root["base"]) {
+        const std::string name = base.IsScalar() ? base.as<std::string>() : describe(base);
+        if (name != "default" && name != "paper")
+          throw UsageError("config key 'base' in '" + config_path +
+                           "' must be default or paper, got '" + name + "'");
+        if (name == "paper") options = paper_options();
+        root.remove("base");
+      }
       for_each_leaf(root, "", [&](const std::string& path, const YAML::Node& value) {
         apply(path, value, " in '" + config_path + "'");
       });
@@ -229,10 +261,11 @@ void validate_options(const Options& o) {
   require(o.tet_shape == "input" || o.tet_shape == "unfolded" || o.tet_shape == "auto",
           "tetrahedralize.shape", "must be input, unfolded or auto, got '" + o.tet_shape + "'");
   require(
-      o.tet_shape == "input" || (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
+      o.tet_shape != "unfolded" ||
+          (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
       "tetrahedralize.shape",
-      "unfolded and auto need domain: surface (the surface solve they tetrahedralize) and a "
-      "method other than lsmds and scf");
+      "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method other "
+      "than lsmds and scf (auto falls back to the input's tets there)");
   require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
           "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");

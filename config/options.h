@@ -19,7 +19,14 @@
 
 namespace unfold {
 
+/// What unfold does when not told otherwise (configs/default.yaml): the
+/// surface solved to convergence at a low beta, its rotations integrated on
+/// the tet mesh, the unfolded shape's tets where the input touches itself,
+/// stretch weighted by area (docs/method.md, pose invariance, contact,
+/// meshing). The members' initializers are the paper's parameters
+/// (paper_options()); the constructor sets the default method over them.
 struct Options {
+  Options();
   std::string method = "local_global";
   int target_vertices = 0;
   TetOptions tet;
@@ -52,8 +59,15 @@ struct Options {
   int threads = 0;
 };
 
+/// The paper's method and parameters (configs/paper.yaml): the energy on the
+/// tet mesh, beta 1.5 n / lambda_2 and four cascades of at most 15 iterations
+/// (Algorithm 1), no integration.
+Options paper_options();
+
 /// Options from a YAML file (or the defaults when config_path is empty), then
 /// the overrides (YAML path -> value text, e.g. "cascade.k_iter" -> "20").
+/// The file's keys override the defaults, or the paper's parameters when it
+/// says `base: paper` (the baselines' and the paper's variants' configs).
 /// @throws UsageError naming the key for an unreadable file, invalid YAML, an
 ///         unknown key, a wrong type or an out-of-range value
 Options load_options(const std::string& config_path,

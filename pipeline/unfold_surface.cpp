@@ -395,8 +395,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   } else {
     solve_cascade(graph, result.tets, options, &result);
   }
-  // The rotation integration belongs to the cascade methods; SCF's ARAP refinement is its own.
-  if (options.integrate.iterations > 0 && options.method != "scf")
+  // The rotation integration belongs to the cascade methods: LSMDS has no
+  // rotations to integrate, SCF's ARAP refinement is its own.
+  if (options.integrate.iterations > 0 && options.method != "scf" && options.method != "lsmds")
     integrate_cascade_rotations(graph, options, &result);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)

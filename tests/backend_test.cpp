@@ -22,9 +22,9 @@ const std::string kConfigs = UNFOLD_SOURCE_DIR "/configs/";
 
 void expect_backends_agree(const SurfaceMesh& surface) {
   const auto rows =
-      compare_configs(surface, {kConfigs + "default.yaml", kConfigs + "ceres.yaml"}, 4.0);
+      compare_configs(surface, {kConfigs + "paper.yaml", kConfigs + "ceres.yaml"}, 4.0);
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_EQ(rows[0].config, "default");
+  EXPECT_EQ(rows[0].config, "paper");
   EXPECT_EQ(rows[1].config, "ceres");
   EXPECT_LT(std::abs(rows[0].final_energy - rows[1].final_energy),
             0.01 * std::abs(rows[0].final_energy))
@@ -104,8 +104,9 @@ TEST(BackendVolume, NoInvertedTetrahedraOnWolf0) {
 }
 
 TEST(BackendVolume, RefusedByLocalGlobal) {
-  EXPECT_THROW(load_options("", {{"volume.weight", "1"}}), UsageError);
-  EXPECT_NO_THROW(load_options("", {{"volume.weight", "1"}, {"method", "ceres"}}));
+  EXPECT_THROW(load_options("", {{"volume.weight", "1"}, {"domain", "volume"}}), UsageError);
+  EXPECT_NO_THROW(
+      load_options("", {{"volume.weight", "1"}, {"method", "ceres"}, {"domain", "volume"}}));
 }
 
 TEST(BackendSupport, LocalGlobalRefusesANonQuadraticTermByName) {

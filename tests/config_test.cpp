@@ -30,8 +30,23 @@ TEST(Config, ShippedDefaultEqualsBuiltInDefaults) {
   const Options shipped = load_options(UNFOLD_SOURCE_DIR "/configs/default.yaml");
   const Options defaults;
   EXPECT_EQ(options_to_yaml(shipped), options_to_yaml(defaults));
-  EXPECT_NE(options_to_yaml(shipped).find("k_iter: 15"), std::string::npos);
+  EXPECT_NE(options_to_yaml(shipped).find("k_iter: 300"), std::string::npos);
+  EXPECT_NE(options_to_yaml(shipped).find("shape: auto"), std::string::npos);
   EXPECT_NE(options_to_yaml(shipped).find("edge_ratio_band: [0.95, 1.05]"), std::string::npos);
+}
+
+// base: paper starts a config from the paper's parameters: paper.yaml lists
+// them all and equals paper_options(); a config of one key over base: paper
+// differs from it in that key alone.
+TEST(Config, BasePaperStartsFromThePapersParameters) {
+  const Options paper = load_options(UNFOLD_SOURCE_DIR "/configs/paper.yaml");
+  EXPECT_EQ(options_to_yaml(paper), options_to_yaml(paper_options()));
+  EXPECT_NE(options_to_yaml(paper), options_to_yaml(Options{}));
+  const Options surface = load_options(UNFOLD_SOURCE_DIR "/configs/surface.yaml");
+  Options expected = paper_options();
+  expected.domain = "surface";
+  EXPECT_EQ(options_to_yaml(surface), options_to_yaml(expected));
+  expect_usage_error("base: sketch\n", "base");
 }
 
 TEST(Config, PaperConfigIsThePapersMethod) {

@@ -114,7 +114,7 @@ TEST(Baselines, LsmdsAndDpmuRunThroughThePipeline) {
   // LSMDS keeps geodesics as Euclidean distances: the geodesic error is small.
   EXPECT_LT(l.metrics.E_geo, 0.1);
 
-  Options dpmu;
+  Options dpmu = paper_options();  // DPMU is a tet-mesh method
   dpmu.method = "dpmu";
   dpmu.energy.arap_weight = 0;
   dpmu.energy.edge_length_weight = 1;

@@ -23,8 +23,7 @@ TEST_P(PipelineWolf, UnfoldsWithThePapersQuality) {
   const std::string path = test::shared_data(std::string("tosca/") + GetParam() + ".off");
   if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/" << GetParam() << ".off";
   const SurfaceMesh input = read_surface_mesh(path);
-  const Options defaults;
-  const UnfoldResult r = unfold_surface(input, defaults);
+  const UnfoldResult r = unfold_surface(input, paper_options());
   ASSERT_EQ(r.canonical.V.rows(), 4344);
   EXPECT_EQ(r.canonical.faces, input.faces);
   EXPECT_TRUE(r.canonical.V.allFinite());
@@ -95,6 +94,15 @@ TEST(PipelinePose, ContactConfigGivesNearlyOneCanonicalFormWhereLegsTouch) {
   std::vector<ShapePose> poses = presets();
   for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
   expect_nearly_one_canonical_form("contact.yaml", poses, 0.02);
+}
+
+// The default (configs/default.yaml: shape auto) takes the input's tets for
+// the poses without contact and the unfolded shape's for those whose legs
+// touch: all of them end nearly at one canonical form.
+TEST(PipelinePose, DefaultGivesNearlyOneCanonicalFormWhereLegsTouch) {
+  std::vector<ShapePose> poses = presets();
+  for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
+  expect_nearly_one_canonical_form("default.yaml", poses, 0.02);
 }
 
 TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {
