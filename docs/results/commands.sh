@@ -1,6 +1,7 @@
 #!/bin/sh
-# The evaluation behind docs/results/README.md: TOSCA (wolf, centaur, cat) and
-# FAUST (tr_reg) in one dataset directory so retrieval ranks across all classes.
+# The evaluation behind docs/results/README.md: TOSCA (wolf, centaur, cat,
+# david) and FAUST (tr_reg) in one dataset directory so retrieval ranks across
+# all classes; faust_remeshed (each pose meshed on its own, .vts rows) apart.
 # Run from the worktree root after building; outputs (meshes) go to $OUT, only
 # the tables and plots are committed.
 set -e
@@ -8,16 +9,20 @@ DATA=${DATA:-../shared/data}
 OUT=${OUT:-/tmp/unfold_eval}
 mkdir -p "$OUT/dataset"
 for f in "$DATA"/tosca/*.off "$DATA"/faust/*.off; do ln -sf "$(realpath "$f")" "$OUT/dataset/"; done
+mkdir -p "$OUT/remeshed_dataset"
+for f in "$DATA"/faust_remeshed/*; do ln -sf "$(realpath "$f")" "$OUT/remeshed_dataset/"; done
 
 # Every method at the paper's resolution (surfaces simplified to ~2,000 vertices).
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
-  --configs configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml,configs/scf.yaml \
+  --configs configs/paper.yaml,configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml,configs/scf.yaml \
   --target_vertices 2000 --jobs 2
-# Ours at full resolution: the paper's method, the surface domain and the
-# integrated rotation field (docs/method.md, pose invariance); pose pictures
-# poses_<class>_<method>.png.
+# Ours at full resolution: the paper's method, the integrated rotation field on
+# the input's tets and the default (docs/method.md: pose invariance, contact,
+# meshing); pose pictures poses_<class>_<method>.png.
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" \
-  --configs configs/paper.yaml,configs/surface.yaml,configs/invariant.yaml --jobs 2
+  --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml --jobs 2
+build/bin/unfold_batch --input_dir "$OUT/remeshed_dataset" --output_dir "$OUT/remeshed" \
+  --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml --jobs 2
 
 # The report: Table 1-style means, the retrieval measures (NN, FT, ST, E, DCG per
 # framework, icp and ort, like Table 3), cdf_*.png and the precision-recall
@@ -31,3 +36,4 @@ for d in 2k full; do
   for f in "$OUT"/$d/similarity_*.csv; do cp "$f" "docs/results/${d}_$(basename "$f")"; done
 done
 for f in "$OUT"/full/poses_*.png; do cp "$f" docs/results/; done
+for f in results pose_invariance pose_pairs; do cp "$OUT/remeshed/$f.csv" "docs/results/${f}_remeshed.csv"; done
