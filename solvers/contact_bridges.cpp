@@ -84,6 +84,7 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
   {
     std::vector<double> dist(size_t(ns), std::numeric_limits<double>::infinity());
     std::vector<int> touched;
+    std::vector<int> pending(size_t(ns), 0);  // per vertex, the source's targets on it
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
 #pragma omp for schedule(dynamic, 256)
@@ -96,6 +97,7 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
       double limit = 0;
       for (const auto& t : targets) limit = std::max(limit, bound(t.first));
       int open = int(targets.size());
+      for (const auto& t : targets) ++pending[size_t(t.first)];
       dist[size_t(i)] = 0;
       touched.push_back(i);
       heap.push({0.0, i});
@@ -104,7 +106,8 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
         heap.pop();
         if (d > dist[size_t(v)]) continue;
         if (d > limit) break;
-        for (const auto& t : targets) open -= t.first == v;
+        open -= pending[size_t(v)];
+        pending[size_t(v)] = 0;
         for (int k = graph.offsets[size_t(v)]; k < graph.offsets[size_t(v) + 1]; ++k) {
           const int w = graph.neighbors[size_t(k)];
           const double dw = d + (P.row(v) - P.row(w)).norm();
@@ -117,6 +120,7 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
       }
       for (const auto& [j, e] : targets)
         if (dist[size_t(j)] > bound(j)) bridge[size_t(e)] = 1;
+      for (const auto& t : targets) pending[size_t(t.first)] = 0;
       for (const int v : touched) dist[size_t(v)] = std::numeric_limits<double>::infinity();
       touched.clear();
       heap = {};
