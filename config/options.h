@@ -39,7 +39,7 @@ struct Options {
   std::string tet_shape = "input";
   /// shape auto: a tet edge bridges a contact when its ends are farther apart
   /// along the surface than this times sqrt(area) (solvers/contact_bridges.h)
-  double contact_geodesic = 0.1;
+  double contact_geodesic = 0.05;
   std::string beta_mode = "relative";
   double beta_value = 1.5;
   bool raise_beta_to_bound = true;    ///< a starting beta below the bound is raised above it
