@@ -180,16 +180,7 @@ Options::Options() {
   energy.stretch_masses = "lumped";
 }
 
-Options paper_options() {
-  Options paper;
-  paper.domain = "volume";
-  paper.tet_shape = "input";
-  paper.beta_value = 1.5;
-  paper.cascade = CascadeOptions{};
-  paper.integrate = IntegrateOptions{};
-  paper.energy.stretch_masses = "uniform";
-  return paper;
-}
+Options paper_options() { return Options(Options::PapersParameters{}); }
 
 Options load_options(const std::string& config_path,
                      const std::map<std::string, std::string>& overrides) {

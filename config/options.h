@@ -24,9 +24,12 @@ namespace unfold {
 /// the tet mesh, the unfolded shape's tets where the input touches itself,
 /// stretch weighted by area (docs/method.md, pose invariance, contact,
 /// meshing). The members' initializers are the paper's parameters
-/// (paper_options()); the constructor sets the default method over them.
+/// (paper_options()); the default constructor sets the default method over them.
 struct Options {
+  struct PapersParameters {};
   Options();
+  /// The members' initializers alone: the paper's parameters.
+  explicit Options(PapersParameters) {}
   std::string method = "local_global";
   int target_vertices = 0;
   TetOptions tet;

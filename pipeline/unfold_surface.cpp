@@ -220,9 +220,7 @@ void solve_on_unfolded_tets(const Options& options, UnfoldResult* out) {
   if (options.tet_shape == "auto") tet.route = "robust";
   UnfoldedTetMesh unfolded = tetrahedralize_unfolded(result.surface, result.cascade.positions, tet);
   result.tets = std::move(unfolded.rest);
-  const int contact_tets = result.tet_report.contact_tets;
   result.tet_report = unfolded.report;
-  result.tet_report.contact_tets = contact_tets;
   result.tet_report.seconds = seconds_since(start);
   result.cascade.positions = unfolded.unfolded.rowwise() - unfolded.unfolded.colwise().mean();
   result.unfolded_tet_positions = std::move(unfolded.unfolded);
@@ -361,17 +359,18 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   // if it was deferred.
   bool on_unfolded =
       tets_from_unfolded(options) && (prepared.tets_deferred || prepared.tets.T.rows() > 0);
+  int contact_tets = 0;
   if (tets_from_unfolded_on_contact(options) && prepared.tets.T.rows() > 0) {
     const auto start = std::chrono::steady_clock::now();
-    result.tet_report.contact_tets = int(
+    contact_tets = int(
         tets_bridging_contact(prepared.surface, prepared.tets, options.contact_geodesic).size());
-    on_unfolded = result.tet_report.contact_tets > 0;
-    LOG(INFO) << result.tet_report.contact_tets << " of the input's tets bridge a contact ("
-              << seconds_since(start) << " s): tetrahedralizing "
-              << (on_unfolded ? "the unfolded shape" : "the input");
+    on_unfolded = contact_tets > 0;
+    LOG(INFO) << contact_tets << " of the input's tets bridge a contact (" << seconds_since(start)
+              << " s): tetrahedralizing " << (on_unfolded ? "the unfolded shape" : "the input");
   }
   if (on_unfolded) {
     solve_on_unfolded_tets(options, &result);
+    result.tet_report.contact_tets = contact_tets;
   } else if (prepared.tets_deferred) {
     result.tets = tetrahedralize_or_fall_back(result.surface, false, options, &result.tet_report,
                                               &result.warnings);

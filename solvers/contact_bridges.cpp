@@ -55,11 +55,11 @@ std::vector<int> nearest_surface_vertex(const EdgeGraph& graph, const Eigen::Mat
 
 // Whether each tet edge (by the tet graph's edge index) is a bridge: the
 // surface edge-graph distance between its ends' nearest surface vertices
-// exceeds both the reach and kDetour times their distance in space. An edge inside a limb joins
-// surface points around it (a detour of about pi/2); one across a contact joins points that only a
-// long way along the surface connects. Each source's Dijkstra stops once its
-// targets are settled or the bound is passed, so only the ends of bridges
-// explore a whole ball.
+// exceeds both the reach and kDetour times their distance in space. An edge
+// inside a limb joins surface points around it (a detour of about pi/2); one
+// across a contact joins points that only a long way along the surface
+// connects. Each source's Dijkstra stops once its targets are settled or the
+// bound is passed, so only the ends of bridges explore a whole ball.
 std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_graph,
                                const Eigen::MatrixX3d& P, double geodesic) {
   const int ns = int(surface.V.rows());
