@@ -61,6 +61,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                         {"fallback", r.tet_report.fallback},
                                         {"shape", r.tet_report.shape},
                                         {"inverted_rest_tets", r.tet_report.inverted_rest_tets},
+                                        {"contact_face_pairs", r.tet_report.contact_face_pairs},
                                         {"contact_tets", r.tet_report.contact_tets},
                                         {"seconds", r.tet_report.seconds}}},
       {"seconds_tetrahedralize", r.tet_report.seconds},

@@ -33,6 +33,7 @@
 #include "solvers/lsmds.h"
 #include "solvers/make_backend.h"
 #include "solvers/tetrahedralize_unfolded.h"
+#include "tetra/intersecting_faces.h"
 
 namespace unfold {
 namespace {
@@ -66,11 +67,12 @@ TetMesh surface_only(const SurfaceMesh& surface) {
 // tetrahedralization failed) and the options allow it, the surface alone: a
 // TetMesh without tets, whose edge graph is then the triangles'.
 TetMesh tetrahedralize_or_fall_back(const SurfaceMesh& surface, bool open, const Options& options,
-                                    TetReport* report, std::vector<std::string>* warnings) {
+                                    TetReport* report, std::vector<std::string>* warnings,
+                                    int known_intersections = -1) {
   std::string reason = "the surface is open";
   if (!open) {
     try {
-      return tetrahedralize(surface, options.tet, report);
+      return tetrahedralize(surface, options.tet, report, known_intersections);
     } catch (const NumericalError& e) {
       if (!options.fallback_surface_graph)
         throw NumericalError(std::string(e.what()) +
@@ -330,14 +332,31 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
     prepared.surface = input;
   }
 
-  if (tets_from_unfolded(options) && !open) {
+  // tetrahedralize.shape auto: parts of the surface that pass through each
+  // other are contact before any tet is made, and the input's tets would only
+  // be checked and dropped (every such shape of ../shared/data also has tets
+  // bridging a contact, docs/method.md).
+  int known_intersections = -1;
+  if (tets_from_unfolded_on_contact(options) && !open) {
+    const auto pairs =
+        intersecting_face_pairs(prepared.surface.V, triangulate_faces(prepared.surface));
+    known_intersections = int(pairs.size());
+    prepared.tet_report.contact_face_pairs =
+        count_intersections_far_along_surface(prepared.surface, pairs, options.contact_geodesic);
+    if (prepared.tet_report.contact_face_pairs > 0)
+      LOG(INFO) << prepared.tet_report.contact_face_pairs << " of the surface's "
+                << known_intersections
+                << " intersecting face pairs are parts passing through each other: "
+                   "tetrahedralizing the unfolded shape";
+  }
+  if ((tets_from_unfolded(options) || prepared.tet_report.contact_face_pairs > 0) && !open) {
     // made after the surface solve, by unfold_prepared
     prepared.tets = surface_only(prepared.surface);
     prepared.tets_deferred = true;
     return prepared;
   }
   prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options, &prepared.tet_report,
-                                              &prepared.warnings);
+                                              &prepared.warnings, known_intersections);
   sort_interior_vertices(&prepared.tets);
   LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
             << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
@@ -359,22 +378,26 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   // if it was deferred.
   bool on_unfolded =
       tets_from_unfolded(options) && (prepared.tets_deferred || prepared.tets.T.rows() > 0);
+  const bool contact_check = tets_from_unfolded_on_contact(options);
+  if (contact_check && prepared.tet_report.contact_face_pairs > 0) on_unfolded = true;
+  if (!on_unfolded && prepared.tets_deferred) {
+    result.tets = tetrahedralize_or_fall_back(result.surface, false, options, &result.tet_report,
+                                              &result.warnings);
+    sort_interior_vertices(&result.tets);
+  }
   int contact_tets = 0;
-  if (tets_from_unfolded_on_contact(options) && prepared.tets.T.rows() > 0) {
+  if (contact_check && !on_unfolded && result.tets.T.rows() > 0) {
     const auto start = std::chrono::steady_clock::now();
-    contact_tets = int(
-        tets_bridging_contact(prepared.surface, prepared.tets, options.contact_geodesic).size());
+    contact_tets =
+        int(tets_bridging_contact(result.surface, result.tets, options.contact_geodesic).size());
     on_unfolded = contact_tets > 0;
     LOG(INFO) << contact_tets << " of the input's tets bridge a contact (" << seconds_since(start)
               << " s): tetrahedralizing " << (on_unfolded ? "the unfolded shape" : "the input");
   }
   if (on_unfolded) {
     solve_on_unfolded_tets(options, &result);
+    result.tet_report.contact_face_pairs = prepared.tet_report.contact_face_pairs;
     result.tet_report.contact_tets = contact_tets;
-  } else if (prepared.tets_deferred) {
-    result.tets = tetrahedralize_or_fall_back(result.surface, false, options, &result.tet_report,
-                                              &result.warnings);
-    sort_interior_vertices(&result.tets);
   }
   const EdgeGraph graph = build_edge_graph(
       int(result.tets.V.rows()), result.tets.T.rows() > 0

@@ -23,6 +23,8 @@ constexpr int kTetEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}
 // diameter); an edge is a bridge only beyond this detour.
 constexpr double kDetour = 4.0;
 
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
 // Each vertex's nearest surface vertex along the tet edges: itself for a
 // surface vertex (one Dijkstra from all of them at once).
 std::vector<int> nearest_surface_vertex(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
@@ -51,6 +53,86 @@ std::vector<int> nearest_surface_vertex(const EdgeGraph& graph, const Eigen::Mat
     }
   }
   return nearest;
+}
+
+// One bounded A* search at a time on an edge graph (lengths from P), its
+// arrays kept between runs so that each run costs only what it reaches.
+class BoundedSearch {
+ public:
+  BoundedSearch(const EdgeGraph& graph, const Eigen::MatrixX3d& P)
+      : graph_(graph), P_(P), dist_(size_t(graph.num_vertices), kUnreached) {}
+
+  /// Settles vertices in order of their distance from the sources plus
+  /// estimate(v), a lower bound of what is left to the goal that never
+  /// drops by more than an edge's length along it (for instance a distance
+  /// in space), up to `limit`, calling settle(v) on each; stops early when it
+  /// returns false. Every vertex on a path from a source of length at most
+  /// `limit` to a goal is settled before it stops on the limit.
+  template <class Estimate, class Settle>
+  void run(const int* sources, int count, double limit, Estimate estimate, Settle settle) {
+    for (const int v : touched_) dist_[size_t(v)] = kUnreached;
+    touched_.clear();
+    heap_ = {};
+    for (int k = 0; k < count; ++k) reach(sources[k], 0.0, estimate);
+    while (!heap_.empty()) {
+      const Entry top = heap_.top();
+      heap_.pop();
+      if (top.dist > dist_[size_t(top.v)]) continue;
+      if (top.key > limit || !settle(top.v)) break;
+      for (int k = graph_.offsets[size_t(top.v)]; k < graph_.offsets[size_t(top.v) + 1]; ++k) {
+        const int w = graph_.neighbors[size_t(k)];
+        reach(w, top.dist + (P_.row(top.v) - P_.row(w)).norm(), estimate);
+      }
+    }
+  }
+
+  /// After run: v's distance if settled, an upper bound if only reached,
+  /// infinity if neither.
+  double distance(int v) const { return dist_[size_t(v)]; }
+
+ private:
+  static constexpr double kUnreached = std::numeric_limits<double>::infinity();
+  struct Entry {
+    double key, dist;
+    int v;
+    bool operator>(const Entry& o) const { return key > o.key; }
+  };
+  template <class Estimate>
+  void reach(int w, double d, Estimate estimate) {
+    if (!(d < dist_[size_t(w)])) return;
+    if (dist_[size_t(w)] == kUnreached) touched_.push_back(w);
+    dist_[size_t(w)] = d;
+    heap_.push({d + estimate(w), d, w});
+  }
+
+  const EdgeGraph& graph_;
+  const Eigen::MatrixX3d& P_;
+  std::vector<double> dist_;
+  std::vector<int> touched_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap_;
+};
+
+// The length of the path from i to j that always steps to the neighbour
+// nearest to j in space, or infinity if it stops nearer to no neighbour or
+// grows past `bound`. An upper bound of their distance along the graph: round
+// a convex part, such as a limb's cross-section, it reaches j in a few steps.
+double greedy_path_length(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int i, int j,
+                          double bound) {
+  double length = 0;
+  double to_j = (P.row(i) - P.row(j)).norm();
+  for (int v = i; v != j;) {
+    int next = -1;
+    for (int k = graph.offsets[size_t(v)]; k < graph.offsets[size_t(v) + 1]; ++k) {
+      const int w = graph.neighbors[size_t(k)];
+      const double d = (P.row(w) - P.row(j)).norm();
+      if (d < to_j) to_j = d, next = w;
+    }
+    if (next < 0) return kUnbounded;
+    length += (P.row(v) - P.row(next)).norm();
+    if (length > bound) return kUnbounded;
+    v = next;
+  }
+  return length;
 }
 
 // Whether each tet edge (by the tet graph's edge index) is a bridge: the
@@ -82,11 +164,7 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
   std::vector<char> bridge(size_t(tet_graph.num_edges()), 0);
 #pragma omp parallel if (ns >= kMinParallelRows)
   {
-    std::vector<double> dist(size_t(ns), std::numeric_limits<double>::infinity());
-    std::vector<int> touched;
-    std::vector<int> pending(size_t(ns), 0);  // per vertex, the source's targets on it
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> heap;
+    BoundedSearch search(graph, P);
 #pragma omp for schedule(dynamic, 256)
     for (int i = 0; i < ns; ++i) {
       const auto& targets = pairs[size_t(i)];
@@ -94,39 +172,26 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
       const auto bound = [&](int j) {
         return std::max(reach, kDetour * (P.row(i) - P.row(j)).norm());
       };
-      double limit = 0;
-      for (const auto& t : targets) limit = std::max(limit, bound(t.first));
-      int open = int(targets.size());
-      for (const auto& t : targets) ++pending[size_t(t.first)];
-      dist[size_t(i)] = 0;
-      touched.push_back(i);
-      heap.push({0.0, i});
-      while (!heap.empty() && open > 0) {
-        const auto [d, v] = heap.top();
-        heap.pop();
-        if (d > dist[size_t(v)]) continue;
-        if (d > limit) break;
-        open -= pending[size_t(v)];
-        pending[size_t(v)] = 0;
-        for (int k = graph.offsets[size_t(v)]; k < graph.offsets[size_t(v) + 1]; ++k) {
-          const int w = graph.neighbors[size_t(k)];
-          const double dw = d + (P.row(v) - P.row(w)).norm();
-          if (dw < dist[size_t(w)]) {
-            if (std::isinf(dist[size_t(w)])) touched.push_back(w);
-            dist[size_t(w)] = dw;
-            heap.push({dw, w});
-          }
-        }
+      for (const auto& [j, e] : targets) {
+        // a greedy path within the bound proves a pair no bridge, nearly
+        // always; the others (bridges, pairs round a concave part) take A*
+        const double b = bound(j);
+        if (greedy_path_length(graph, P, i, j, b) <= b) continue;
+        const Eigen::RowVector3d goal = P.row(j);
+        search.run(
+            &i, 1, b, [&](int v) { return (P.row(v) - goal).norm(); },
+            [j](int v) { return v != j; });
+        // unsettled, j is beyond the bound, or its tentative distance bounds it
+        if (search.distance(j) > b) bridge[size_t(e)] = 1;
       }
-      for (const auto& [j, e] : targets)
-        if (dist[size_t(j)] > bound(j)) bridge[size_t(e)] = 1;
-      for (const auto& t : targets) pending[size_t(t.first)] = 0;
-      for (const int v : touched) dist[size_t(v)] = std::numeric_limits<double>::infinity();
-      touched.clear();
-      heap = {};
     }
   }
   return bridge;
+}
+
+void check_geodesic(double geodesic, const char* who) {
+  if (!(geodesic > 0) || !std::isfinite(geodesic))
+    throw UsageError(std::string(who) + ": the geodesic bound must be a positive number");
 }
 
 }  // namespace
@@ -137,8 +202,7 @@ std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh
   if (surface.V.rows() != ns)
     throw UsageError("tets_bridging_contact: " + std::to_string(surface.V.rows()) +
                      " surface vertices for a tet mesh with " + std::to_string(ns));
-  if (!(geodesic > 0) || !std::isfinite(geodesic))
-    throw UsageError("tets_bridging_contact: the geodesic bound must be a positive number");
+  check_geodesic(geodesic, "tets_bridging_contact");
   const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
   const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic);
   std::vector<int> out;
@@ -155,6 +219,41 @@ std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh
       }
     }
   return out;
+}
+
+int count_intersections_far_along_surface(const SurfaceMesh& surface,
+                                          const std::vector<std::pair<int, int>>& pairs,
+                                          double geodesic) {
+  check_geodesic(geodesic, "count_intersections_far_along_surface");
+  const Eigen::MatrixX3i F = triangulate_faces(surface);
+  for (const auto& [s, t] : pairs)
+    if (s < 0 || t < 0 || s >= F.rows() || t >= F.rows())
+      throw UsageError("count_intersections_far_along_surface: face pair (" + std::to_string(s) +
+                       ", " + std::to_string(t) + ") out of range");
+  if (pairs.empty()) return 0;
+  const EdgeGraph graph = build_edge_graph(int(surface.V.rows()), Eigen::MatrixXi(F));
+  const double reach = geodesic * std::sqrt(surface_area(surface.V, F));
+  int far = 0;
+#pragma omp parallel reduction(+ : far) if (pairs.size() >= 64)
+  {
+    BoundedSearch search(graph, surface.V);
+#pragma omp for schedule(dynamic, 16)
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const Eigen::Vector3i from = F.row(pairs[k].first), to = F.row(pairs[k].second);
+      const auto estimate = [&](int v) {
+        double d = kUnbounded;
+        for (const int c : to) d = std::min(d, (surface.V.row(v) - surface.V.row(c)).norm());
+        return d;
+      };
+      bool near = false;
+      search.run(from.data(), 3, reach, estimate, [&](int v) {
+        near = v == to[0] || v == to[1] || v == to[2];
+        return !near;
+      });
+      far += !near;
+    }
+  }
+  return far;
 }
 
 }  // namespace unfold

@@ -5,6 +5,7 @@
 // near in space but far apart along the surface.
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "mesh/surface_mesh.h"
@@ -25,5 +26,20 @@ namespace unfold {
 /// @throws UsageError if the surface is not the tets' or geodesic is not positive
 std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh& tets,
                                        double geodesic);
+
+/// The pairs of intersecting faces that are parts of the surface passing
+/// through each other: no corner of one is within `geodesic` times the square
+/// root of the surface's area of a corner of the other, along the surface's
+/// edge graph. Such a surface has contact before any tet mesh is made (nearby
+/// faces that cross are a local defect, not contact).
+/// @param surface  the surface
+/// @param pairs    face pairs of triangulate_faces(surface) that intersect
+///                 (intersecting_face_pairs)
+/// @param geodesic the reach, in units of sqrt(area) (> 0)
+/// @return how many of the pairs are far apart along the surface
+/// @throws UsageError if geodesic is not positive or a face index is out of range
+int count_intersections_far_along_surface(const SurfaceMesh& surface,
+                                          const std::vector<std::pair<int, int>>& pairs,
+                                          double geodesic);
 
 }  // namespace unfold

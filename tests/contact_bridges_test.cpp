@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "shapes/articulated_shape.h"
 #include "test_meshes.h"
+#include "tetra/intersecting_faces.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -62,11 +63,63 @@ TEST(ContactBridges, FindsTheTetsJoiningCrossedLegs) {
   EXPECT_GE(on_legs, 0.9 * double(found.size()));
 }
 
+std::vector<std::pair<int, int>> intersections(const SurfaceMesh& surface) {
+  return intersecting_face_pairs(surface.V, triangulate_faces(surface));
+}
+
+// The crossed legs pass through each other: their intersecting faces are far
+// apart along the surface, and each such pair has a face on either front leg.
+TEST(ContactBridges, IntersectionsOfCrossedLegsAreFarAlongTheSurface) {
+  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1));
+  const SurfaceMesh apart = make_articulated_shape(ShapePose::rest());
+  const auto pairs = intersections(crossed);
+  ASSERT_FALSE(pairs.empty());
+  EXPECT_EQ(count_intersections_far_along_surface(crossed, pairs, 0.1), int(pairs.size()));
+  const Eigen::MatrixX3i F = triangulate_faces(crossed);
+  const auto side = [&](int f) {  // of a face on a lower front leg of the rest pose: +-1, else 0
+    const Eigen::RowVector3d c =
+        (apart.V.row(F(f, 0)) + apart.V.row(F(f, 1)) + apart.V.row(F(f, 2))) / 3;
+    return c(2) < -0.5 && c(0) > 0.3 ? (c(1) > 0 ? 1 : -1) : 0;
+  };
+  for (const auto& [s, t] : pairs) EXPECT_EQ(side(s) * side(t), -1) << s << ", " << t;
+}
+
+// An equator vertex dragged past its neighbour folds the faces around it over
+// the next ones: a local defect, not contact. With a reach shorter than any
+// edge, the pairs that share no corner count.
+TEST(ContactBridges, NearbyIntersectionsAreNoContact) {
+  SurfaceMesh folded = test::uv_sphere(24, 48);
+  const auto equator = [](int s) { return 1 + 11 * 48 + s; };  // ring 12 of 23
+  folded.V.row(equator(0)) = folded.V.row(equator(2));
+  folded.V(equator(0), 2) += 0.01;
+  const auto pairs = intersections(folded);
+  ASSERT_FALSE(pairs.empty());
+  EXPECT_EQ(count_intersections_far_along_surface(folded, pairs, 0.1), 0);
+  const Eigen::MatrixX3i F = triangulate_faces(folded);
+  int apart = 0;
+  for (const auto& [s, t] : pairs) {
+    bool shared = false;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) shared = shared || F(s, a) == F(t, b);
+    apart += !shared;
+  }
+  EXPECT_GT(apart, 0);
+  EXPECT_EQ(count_intersections_far_along_surface(folded, pairs, 1e-4), apart);
+  for (int k = 0; k < ShapePose::num_presets(); ++k) {
+    const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(k));
+    EXPECT_EQ(count_intersections_far_along_surface(shape, intersections(shape), 0.1), 0)
+        << "preset " << k;
+  }
+}
+
 TEST(ContactBridges, RefusesBadArguments) {
   const SurfaceMesh shape = make_articulated_shape(ShapePose::rest());
   const TetMesh tets = tetrahedralize(shape, TetOptions{});
   EXPECT_THROW(tets_bridging_contact(shape, tets, 0), UsageError);
   EXPECT_THROW(tets_bridging_contact(test::octahedron(), tets, 0.1), UsageError);
+  EXPECT_THROW(count_intersections_far_along_surface(shape, {}, 0), UsageError);
+  const int faces = int(triangulate_faces(shape).rows());
+  EXPECT_THROW(count_intersections_far_along_surface(shape, {{0, faces}}, 0.1), UsageError);
 }
 
 }  // namespace

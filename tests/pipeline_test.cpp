@@ -105,6 +105,28 @@ TEST(PipelinePose, DefaultGivesNearlyOneCanonicalFormWhereLegsTouch) {
   expect_nearly_one_canonical_form("default.yaml", poses, 0.02);
 }
 
+// Crossed legs pass through each other: shape auto decides on the contact from
+// the intersecting faces, without the input's tets, and ends where checking
+// the input's tets (as a mesh prepared with them makes it) ends.
+TEST(PipelinePose, ContactFromIntersectingFacesSkipsOnlyTheInputsTets) {
+  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1));
+  const Options options = load_options(UNFOLD_SOURCE_DIR "/configs/default.yaml");
+  const PreparedMesh quick = prepare_mesh(crossed, options);
+  EXPECT_TRUE(quick.tets_deferred);
+  EXPECT_GT(quick.tet_report.contact_face_pairs, 0);
+  const PreparedMesh with_tets = prepare_mesh(crossed, paper_options());
+  ASSERT_GT(with_tets.tets.T.rows(), 0);
+  const UnfoldResult a = unfold_prepared(quick, options);
+  const UnfoldResult b = unfold_prepared(with_tets, options);
+  EXPECT_EQ(a.tet_report.shape, "unfolded");
+  EXPECT_EQ(b.tet_report.shape, "unfolded");
+  EXPECT_EQ(a.tet_report.contact_tets, 0) << "not checked";
+  EXPECT_GT(b.tet_report.contact_tets, 0);
+  ASSERT_EQ(a.tets.T, b.tets.T);
+  EXPECT_LT((a.canonical.V - b.canonical.V).cwiseAbs().maxCoeff(),
+            1e-6 * rms_radius(a.canonical.V));
+}
+
 TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {
   const SurfaceMesh a = make_articulated_shape(ShapePose::preset(0));
   Options surface;

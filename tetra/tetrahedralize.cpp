@@ -31,7 +31,8 @@ std::string not_a_plc(const SurfaceMesh& surface, int num_intersecting_faces) {
 
 }  // namespace
 
-TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, TetReport* report) {
+TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, TetReport* report,
+                       int known_intersecting_faces) {
   const auto start = std::chrono::steady_clock::now();
   TetReport local;
   TetReport& r = report ? *report : local;
@@ -39,19 +40,23 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   if (options.route != "conforming" && options.route != "robust" && options.route != "auto")
     throw UsageError("unknown tetrahedralization route '" + options.route +
                      "' (known: auto, conforming, robust)");
-  // Counted on every route: a fraction of a second on 55k faces, and it says
-  // why auto falls back (TetGen's conforming mode refuses any such pair). From
-  // kMinParallelRows vertices the robust route's first steps are taken on the
-  // other core meanwhile, speculatively for auto (most real scans go robust; a
-  // clean surface drops them).
-  auto count = std::async(std::launch::async, [&surface] {
-    return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
-  });
+  // Counted on every route (unless the caller did): a fraction of a second on
+  // 55k faces, and it says why auto falls back (TetGen's conforming mode
+  // refuses any such pair). From kMinParallelRows vertices the robust route's
+  // first steps are taken on the other core meanwhile, speculatively for auto
+  // (most real scans go robust; a clean surface drops them).
+  const bool counted = known_intersecting_faces >= 0;
+  std::future<int> count;
+  if (!counted)
+    count = std::async(std::launch::async, [&surface] {
+      return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
+    });
   std::optional<RobustStart> first_steps;
   if (options.route == "robust" ||
-      (options.route == "auto" && surface.V.rows() >= kMinParallelRows))
+      (options.route == "auto" &&
+       (counted ? known_intersecting_faces > 0 : surface.V.rows() >= kMinParallelRows)))
     first_steps = robust_start(surface);
-  r.num_intersecting_faces = count.get();
+  r.num_intersecting_faces = counted ? known_intersecting_faces : count.get();
   const auto robust = [&] {
     if (!first_steps) first_steps = robust_start(surface);
     r.route = "robust";

@@ -41,6 +41,10 @@ struct TetReport {
   /// unfolded: tets whose orientation at rest (put back into the input) is not
   /// the one they were made with
   int inverted_rest_tets = 0;
+  /// shape auto: the surface's intersecting face pairs that are parts passing
+  /// through each other (solvers/contact_bridges.h); when there are any, shape
+  /// is "unfolded" and the input's tets are neither made nor checked
+  int contact_face_pairs = 0;
   /// shape auto: the input's tets found bridging a contact
   /// (solvers/contact_bridges.h); shape is "unfolded" when there are any
   int contact_tets = 0;
@@ -48,13 +52,15 @@ struct TetReport {
 
 /// Tetrahedralizes a closed surface.
 /// @param surface a checked surface (see check_surface_mesh): closed, one component
+/// @param known_intersecting_faces the count of intersecting_face_pairs(surface) when
+///        the caller has it (-1: counted here)
 /// @returns a TetMesh with V.topRows(surface.V.rows()) == surface.V, every
 ///          surface vertex used by some tetrahedron
 /// @throws UsageError for an unknown route, NumericalError when the route fails
 ///         (TetGen's error kind is named; auto fails only if robust fails too),
 ///         InputError for an open surface
 TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
-                       TetReport* report = nullptr);
+                       TetReport* report = nullptr, int known_intersecting_faces = -1);
 
 /// TetGen in boundary-conforming mode with no Steiner points on the surface
 /// (switches -pYq, and -a when max_volume > 0: more interior points, for scale
