@@ -193,7 +193,7 @@ int run() {
       "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s\n",
       int(result.surface.V.rows()), int(result.tets.V.rows()), int(result.tets.T.rows()),
       result.tet_report.route.c_str(), result.tet_report.num_intersecting_faces,
-      result.tet_report.seconds + result.seconds_unfold, metric("E_rig", m.E_rig).c_str(),
+      result.seconds_prepare + result.seconds_unfold, metric("E_rig", m.E_rig).c_str(),
       metric("E_str", m.E_str).c_str(),
       m.E_geo_skipped.empty() ? metric("E_geo", m.E_geo).c_str() : m.E_geo_skipped.c_str(),
       result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,

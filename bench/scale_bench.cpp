@@ -12,14 +12,18 @@
 // (seconds_unfold: AMG setup, lambda_2 and the cascade; seconds_total: the
 // whole unfold_surface call), then
 //   seconds_read seconds_lambda2 seconds_cascade seconds_write surface_vertices E_str
-//   seconds_interior seconds_integration seconds_anchored
+//   seconds_interior seconds_integration seconds_anchored seconds_prepare seconds_contact
+//   tet_shape
 // (seconds_read: reading --input, 0 for the demo shape; seconds_lambda2: the
 // solver's setup, AMG included, and lambda_2; seconds_write: the canonical
 // surface as OFF and the metrics JSON, as `unfold --output --metrics_json`
 // writes them, into a temporary folder). --metrics=E_rig,E_str (etc.) sets
 // metrics.compute, --config=C.yaml a config (e.g. configs/invariant.yaml: its
 // stages after the surface solve are seconds_interior, seconds_integration and
-// seconds_anchored; 0 for the paper's method). --analyze_only stops after the direct solver's
+// seconds_anchored; 0 for the paper's method; seconds_prepare: prepare_mesh, the input's tets
+// included when made; seconds_contact: tetrahedralize.shape auto's contact check; tet_shape:
+// input or unfolded, whose seconds_tet are the unfolded shape's tets and their placement,
+// inside seconds_unfold). --analyze_only stops after the direct solver's
 // symbolic analysis and prints
 //   tet_vertices tets seconds_tet seconds_analyze factor_nonzeros factor_gflops peak_rss_mb
 // --plot draws the scaling plot from bench/run's CSV (columns as the row above).
@@ -172,12 +176,13 @@ int run(int argc, char** argv) {
   std::printf(
       "%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%d\t%s\t%d\t%.0f\t%.0f\t%.4f\t%.4f\t%.3f\t%.3f\t%.3f\t%."
       "3f\t%d\t%."
-      "4f\t%.3f\t%.3f\t%.3f\n",
+      "4f\t%.3f\t%.3f\t%.3f\t%.3f\t%.3f\t%s\n",
       int(r.tets.V.rows()), int(r.tets.T.rows()), r.tet_report.seconds, r.seconds_unfold,
       r.metrics.seconds, total, r.cascade.iterations, r.linear_solver.c_str(), r.cg.iterations,
       peak_rss_mb(RUSAGE_SELF), peak_rss_mb(RUSAGE_CHILDREN), r.metrics.E_rig, r.cascade.edge_ratio,
       seconds_read, r.seconds_lambda2, r.seconds_cascade, seconds_write, int(r.surface.V.rows()),
-      r.metrics.E_str, r.seconds_interior, r.seconds_integration, r.seconds_anchored);
+      r.metrics.E_str, r.seconds_interior, r.seconds_integration, r.seconds_anchored,
+      r.seconds_prepare, r.seconds_contact, r.tet_report.shape.c_str());
   return 0;
 }
 

@@ -65,6 +65,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                         {"contact_tets", r.tet_report.contact_tets},
                                         {"seconds", r.tet_report.seconds}}},
       {"seconds_tetrahedralize", r.tet_report.seconds},
+      {"seconds_prepare", r.seconds_prepare},
+      {"seconds_contact", r.seconds_contact},
       {"seconds_unfold", r.seconds_unfold},
       {"seconds_lambda2", r.seconds_lambda2},
       {"seconds_cascade", r.seconds_cascade},

@@ -103,6 +103,8 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
     merged.beta_start = std::min(merged.beta_start, r.beta_start);
     merged.beta_raised = merged.beta_raised || r.beta_raised;
     merged.seconds_unfold += r.seconds_unfold;
+    merged.seconds_prepare += r.seconds_prepare;
+    merged.seconds_contact += r.seconds_contact;
     merged.seconds_lambda2 += r.seconds_lambda2;
     merged.seconds_cascade += r.seconds_cascade;
     if (r.linear_solver != merged.linear_solver) merged.linear_solver = "mixed";

@@ -304,6 +304,7 @@ std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eige
 
 PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
   validate_options(options);
+  const auto start = std::chrono::steady_clock::now();
   PreparedMesh prepared;
   const SurfaceReport report = check_surface_mesh(input, true);
   // A tet mesh needs a closed surface. The robust route's winding number closes
@@ -338,11 +339,13 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
   // bridging a contact, docs/method.md).
   int known_intersections = -1;
   if (tets_from_unfolded_on_contact(options) && !open) {
+    const auto contact_start = std::chrono::steady_clock::now();
     const auto pairs =
         intersecting_face_pairs(prepared.surface.V, triangulate_faces(prepared.surface));
     known_intersections = int(pairs.size());
     prepared.tet_report.contact_face_pairs =
         count_intersections_far_along_surface(prepared.surface, pairs, options.contact_geodesic);
+    prepared.seconds_contact = seconds_since(contact_start);
     if (prepared.tet_report.contact_face_pairs > 0)
       LOG(INFO) << prepared.tet_report.contact_face_pairs << " of the surface's "
                 << known_intersections
@@ -353,6 +356,7 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
     // made after the surface solve, by unfold_prepared
     prepared.tets = surface_only(prepared.surface);
     prepared.tets_deferred = true;
+    prepared.seconds = seconds_since(start);
     return prepared;
   }
   prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options, &prepared.tet_report,
@@ -361,6 +365,7 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
   LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
             << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
             << " s";
+  prepared.seconds = seconds_since(start);
   return prepared;
 }
 
@@ -371,6 +376,8 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   result.tets = prepared.tets;
   result.tet_report = prepared.tet_report;
   result.warnings = prepared.warnings;
+  result.seconds_prepare = prepared.seconds;
+  result.seconds_contact = prepared.seconds_contact;
 
   const auto start = std::chrono::steady_clock::now();
   // A prepared mesh serves every config of a batch or a comparison: the
@@ -391,6 +398,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
     contact_tets =
         int(tets_bridging_contact(result.surface, result.tets, options.contact_geodesic).size());
     on_unfolded = contact_tets > 0;
+    result.seconds_contact += seconds_since(start);
     LOG(INFO) << contact_tets << " of the input's tets bridge a contact (" << seconds_since(start)
               << " s): tetrahedralizing " << (on_unfolded ? "the unfolded shape" : "the input");
   }

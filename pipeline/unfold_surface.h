@@ -42,6 +42,8 @@ struct PreparedMesh {
   bool tets_deferred = false;
   TetReport tet_report;
   std::vector<std::string> warnings;
+  double seconds = 0;          ///< the preparation: checks, simplification, contact, tets
+  double seconds_contact = 0;  ///< shape auto: its intersecting faces checked for contact
 };
 
 struct UnfoldResult {
@@ -64,9 +66,13 @@ struct UnfoldResult {
   int amg_levels = 0;         ///< iterative: levels of the AMG hierarchy
   double seconds_amg = 0;     ///< iterative: building the AMG hierarchy
   CgStats cg;                 ///< iterative: what the CG global steps did
-  double seconds_lambda2 = 0;      ///< the solver's setup (AMG hierarchy included) and lambda_2
-  double seconds_cascade = 0;      ///< the cascade (its last solve, for domain: surface)
-  double seconds_unfold = 0;       ///< lambda_2 and the cascade, and what surrounds them
+  double seconds_lambda2 = 0;  ///< the solver's setup (AMG hierarchy included) and lambda_2
+  double seconds_cascade = 0;  ///< the cascade (its last solve, for domain: surface)
+  double seconds_unfold = 0;   ///< lambda_2 and the cascade, and what surrounds them
+  double seconds_prepare = 0;  ///< prepare_mesh (the input's tets, when made, included)
+  /// shape auto: finding contact (intersecting faces far apart, the input's
+  /// tets bridging it), in prepare_mesh and after
+  double seconds_contact = 0;
   double seconds_interior = 0;     ///< domain: surface: the interior placed by ARAP
   double seconds_integration = 0;  ///< integrate: the rotation field integrated (one step)
   double seconds_anchored = 0;     ///< integrate: the anchored ARAP steps after it
