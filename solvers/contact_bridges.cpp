@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "mesh/edge_graph.h"
 #include "metrics/pose_invariance.h"
 
@@ -139,6 +140,7 @@ std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh
                      " surface vertices for a tet mesh with " + std::to_string(ns));
   if (!(geodesic > 0) || !std::isfinite(geodesic))
     throw UsageError("tets_bridging_contact: the geodesic bound must be a positive number");
+  report_stage("looking for tets that bridge a contact");
   const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
   const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic);
   std::vector<int> out;

@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "mesh/position_order.h"
 #include "tetra/intersecting_faces.h"
 
@@ -39,6 +40,7 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   if (options.route != "conforming" && options.route != "robust" && options.route != "auto")
     throw UsageError("unknown tetrahedralization route '" + options.route +
                      "' (known: auto, conforming, robust)");
+  report_stage("tetrahedralizing " + std::to_string(surface.faces.size()) + " faces");
   // Counted on every route: a fraction of a second on 55k faces, and it says
   // why auto falls back (TetGen's conforming mode refuses any such pair). From
   // kMinParallelRows vertices the robust route's first steps are taken on the
@@ -55,6 +57,8 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   const auto robust = [&] {
     if (!first_steps) first_steps = robust_start(surface);
     r.route = "robust";
+    report_stage("tetrahedralizing " + std::to_string(surface.faces.size()) +
+                 " faces (robust route)");
     return tetrahedralize_robust(surface, *first_steps, &r);
   };
   TetMesh tets;
