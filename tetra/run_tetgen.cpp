@@ -86,6 +86,8 @@ bool write_all(int fd, const void* data, size_t size) {
 TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::string& what,
                         const std::function<bool()>& give_up) {
   static_assert(sizeof(REAL) == sizeof(double), "TetGen built with REAL = double");
+  const std::string given_up = what + ": given up (its result would not be used)";
+  if (give_up && give_up()) throw NumericalError(given_up);
   int fds[2];
   if (::pipe(fds) != 0) throw NumericalError(what + ": cannot create a pipe for TetGen");
   const pid_t pid = ::fork();
@@ -110,7 +112,7 @@ TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::st
         ::close(fds[0]);
         while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
         }
-        throw NumericalError(what + ": given up (its result would not be used)");
+        throw NumericalError(given_up);
       }
     }
     const ssize_t n = ::read(fds[0], buffer, sizeof buffer);

@@ -22,9 +22,9 @@ struct TetgenOutput {
 /// @param switches TetGen command-line switches; must include 'z' (0-based) and 'Q'
 /// @param in       the input (points, facets)
 /// @param what     name of the caller's route, for error messages
-/// @param give_up  if set, asked every few milliseconds while TetGen runs: true
-///                 ends TetGen's process (the caller learnt meanwhile that the
-///                 result will not be used)
+/// @param give_up  if set, asked before TetGen starts and every few
+///                 milliseconds while it runs: true ends TetGen's process (the
+///                 caller learnt meanwhile that the result will not be used)
 /// @throws NumericalError naming TetGen's error kind, or the signal if it
 ///         crashed, or that it was given up
 TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::string& what,
