@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <new>
@@ -101,6 +102,13 @@ inline void start_logging(const char* name) {
     google::InitGoogleLogging(name, plain_log_prefix, const_cast<char*>(name));
 }
 
+/// Whether stderr is a terminal that can rewrite a line in place (not TERM=dumb,
+/// e.g. an editor's shell buffer).
+inline bool stderr_is_terminal() {
+  const char* term = std::getenv("TERM");
+  return ::isatty(STDERR_FILENO) == 1 && !(term && std::strcmp(term, "dumb") == 0);
+}
+
 /// While alive, on a terminal: the library's progress reports (core/progress.h)
 /// drawn as one line rewritten in place on stderr, and the log lines printed
 /// above it (glog then writes through this sink instead of to stderr). When
@@ -109,7 +117,7 @@ inline void start_logging(const char* name) {
 class ProgressScope : public google::LogSink {
  public:
   ProgressScope(const char* name, bool enabled)
-      : name_(name), display_(name, stderr, enabled && ::isatty(STDERR_FILENO) == 1, 0.25) {
+      : name_(name), display_(name, stderr, enabled && stderr_is_terminal(), 0.25) {
     if (!display_.active()) return;
     full_prefix_ = full_log_prefix();
     set_progress_listener(&display_);

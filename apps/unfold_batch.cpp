@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
     if (!FLAGS_metrics.empty()) options.overrides["metrics.compute"] = FLAGS_metrics;
     if (FLAGS_retrieval_points < 4) throw unfold::UsageError("--retrieval_points must be >= 4");
     options.retrieval.sample_points = FLAGS_retrieval_points;
-    options.progress = FLAGS_progress && ::isatty(STDERR_FILENO) == 1;
+    options.progress = FLAGS_progress && unfold::app::stderr_is_terminal();
     int failed = 0;
     for (const auto& row : unfold::run_batch(options)) failed += row.status != "ok";
     if (failed > 0)
