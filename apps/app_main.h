@@ -1,14 +1,17 @@
 // What every unfold command-line app shares: gflags parsing that reports bad
 // flags as usage errors (exit 2) instead of gflags' own exit 1, the app's own
 // --help (app_help.h), log lines on stderr as "<app>: ..." (glog's full prefix
-// with --v >= 1 or an explicit --log_prefix), and the mapping of library
+// with --v >= 1 or an explicit --log_prefix), the progress line on a terminal
+// (ProgressScope), and the mapping of library
 // exceptions to one-line messages and exit codes (docs/errors.md).
 #pragma once
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
+#include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <new>
@@ -16,6 +19,8 @@
 
 #include "apps/app_help.h"
 #include "core/errors.h"
+#include "core/progress.h"
+#include "core/terminal_progress.h"
 
 namespace unfold::app {
 
@@ -59,38 +64,103 @@ inline bool asks_for_help(int argc, char** argv, bool* full) {
   return false;
 }
 
+// What follows the app's name in a log line of this severity ('I', 'W', 'E', 'F').
+inline const char* severity_tag(char severity) {
+  switch (severity) {
+    case 'W':
+      return " warning:";
+    case 'E':
+      return " error:";
+    case 'F':
+      return " fatal:";
+    default:
+      return "";
+  }
+}
+
 // glog's line prefix replaced by the app's name: "unfold: cascade 2: ...",
 // "unfold: warning: ...". `data` is the name.
 inline void plain_log_prefix(std::ostream& s, const google::LogMessageInfo& info, void* data) {
-  s << static_cast<const char*>(data) << ':';
-  switch (info.severity[0]) {
-    case 'W':
-      s << " warning:";
-      break;
-    case 'E':
-      s << " error:";
-      break;
-    case 'F':
-      s << " fatal:";
-      break;
-    default:
-      break;
-  }
+  s << static_cast<const char*>(data) << ':' << severity_tag(info.severity[0]);
+}
+
+// Whether log lines carry glog's full prefix (time, thread id, source line):
+// with --v >= 1 or an explicit --log_prefix.
+inline bool full_log_prefix() {
+  gflags::CommandLineFlagInfo log_prefix;
+  return FLAGS_v > 0 || (gflags::GetCommandLineFlagInfo("log_prefix", &log_prefix) &&
+                         !log_prefix.is_default && FLAGS_log_prefix);
 }
 
 // Log lines go to stderr, prefixed by the app's name unless the user asked for
 // glog's own prefix (time, thread id, source line) with --v >= 1 or --log_prefix.
 inline void start_logging(const char* name) {
   FLAGS_logtostderr = true;
-  gflags::CommandLineFlagInfo log_prefix;
-  const bool full_prefix =
-      FLAGS_v > 0 || (gflags::GetCommandLineFlagInfo("log_prefix", &log_prefix) &&
-                      !log_prefix.is_default && FLAGS_log_prefix);
-  if (full_prefix)
+  if (full_log_prefix())
     google::InitGoogleLogging(name);
   else
     google::InitGoogleLogging(name, plain_log_prefix, const_cast<char*>(name));
 }
+
+/// Whether stderr is a terminal that can rewrite a line in place (not TERM=dumb,
+/// e.g. an editor's shell buffer).
+inline bool stderr_is_terminal() {
+  const char* term = std::getenv("TERM");
+  return ::isatty(STDERR_FILENO) == 1 && !(term && std::strcmp(term, "dumb") == 0);
+}
+
+/// While alive, on a terminal: the library's progress reports (core/progress.h)
+/// drawn as one line rewritten in place on stderr, and the log lines printed
+/// above it (glog then writes through this sink instead of to stderr). When
+/// stderr is a file or a pipe, or `enabled` is false: nothing changes, the log
+/// lines are plain lines as they come.
+class ProgressScope : public google::LogSink {
+ public:
+  ProgressScope(const char* name, bool enabled)
+      : name_(name), display_(name, stderr, enabled && stderr_is_terminal(), 0.25) {
+    if (!display_.active()) return;
+    full_prefix_ = full_log_prefix();
+    set_progress_listener(&display_);
+    google::AddLogSink(this);
+    for (int severity = 0; severity < google::NUM_SEVERITIES; ++severity)
+      google::SetLogDestination(severity, "");  // no log files either
+    saved_threshold_ = FLAGS_stderrthreshold;
+    FLAGS_stderrthreshold = google::NUM_SEVERITIES;
+    FLAGS_logtostderr = false;
+  }
+  ~ProgressScope() override { finish(); }
+  ProgressScope(const ProgressScope&) = delete;
+  ProgressScope& operator=(const ProgressScope&) = delete;
+
+  /// Erases the progress line (before printing a result to stdout); glog
+  /// writes to stderr again.
+  void finish() {
+    if (!display_.active()) return;
+    FLAGS_logtostderr = true;
+    FLAGS_stderrthreshold = saved_threshold_;
+    google::RemoveLogSink(this);
+    set_progress_listener(nullptr);
+    display_.finish();
+  }
+
+  void send(google::LogSeverity severity, const char* full_filename, const char* base_filename,
+            int line, const google::LogMessageTime& time, const char* message,
+            size_t length) override {
+    (void)full_filename;
+    display_.print_line(
+        full_prefix_
+            ? google::LogSink::ToString(severity, base_filename, line, time, message, length)
+            : name_ + ":" + severity_tag(google::GetLogSeverityName(severity)[0]) + " " +
+                  std::string(message, length),
+        stderr);
+  }
+
+ private:
+  std::string name_;
+  TerminalProgress display_;
+  bool full_prefix_ = false;
+  int saved_threshold_ = 0;
+};
 
 /// Parses flags (or prints the app's help for --help, --helpfull), then runs
 /// `body`, turning every exception into a one-line "<name>: error: ..." on

@@ -65,6 +65,9 @@ DEFINE_string(convergence, "", "energy and edge ratio per iteration as CSV");
 DEFINE_string(convergence_png, "",
               "plot (.png) of the energy and edge ratio per iteration, cascade boundaries marked");
 DEFINE_string(config, "", "YAML config; empty: the built-in defaults (= configs/default.yaml)");
+DEFINE_bool(progress, true,
+            "on a terminal: a progress line (stage, iterations, elapsed time) rewritten in place "
+            "on stderr; plain lines when stderr is a file or a pipe");
 
 // The key and its default are shown by --help (apps/app_help.h).
 #define UNFOLD_DEFINE_KEY_FLAG(flag, path, member, help) DEFINE_string(flag, "", help);
@@ -126,6 +129,7 @@ int run() {
   }
 
   if (!FLAGS_tet_input.empty()) unfold::check_tet_input_format(FLAGS_tet_input);
+  unfold::app::ProgressScope progress("unfold", FLAGS_progress);
   unfold::SurfaceMesh surface;
   unfold::TetMeshData given_tets;
   if (!FLAGS_tet_input.empty()) {
@@ -150,6 +154,7 @@ int run() {
   if (wants_skeleton && result.skeleton.nodes.rows() == 0)
     throw unfold::UsageError(
         "--skeleton_output: no single skeleton (components: separately unfolds each apart)");
+  unfold::report_stage("writing the outputs");
   unfold::OutputTransaction outputs;  // all files or none (docs/errors.md)
   if (!FLAGS_output.empty()) unfold::write_surface_mesh(FLAGS_output, result.canonical);
   if (!FLAGS_input_copy.empty()) unfold::write_surface_mesh(FLAGS_input_copy, result.surface);
@@ -178,6 +183,7 @@ int run() {
     unfold::write_png(FLAGS_render, unfold::render_before_after(result, render,
                                                                 FLAGS_render_color == "rigidity"));
   outputs.commit();
+  progress.finish();
 
   const auto& m = result.metrics;
   const auto metric = [](const char* name, double value) {  // NaN: not computed
@@ -213,7 +219,7 @@ int main(int argc, char** argv) {
   help.groups = {
       {"Input and output",
        {"input", "demo_pose", "tet_input", "output", "input_copy", "tet_output", "rest_tet_output",
-        "metrics_json", "convergence", "skeleton_output", "canonical_skeleton_output"}},
+        "metrics_json", "convergence", "skeleton_output", "canonical_skeleton_output", "progress"}},
       {"Method and config", {"config"}},
       {"Cascade", {}},
       {"Tetrahedralization", {}},

@@ -22,7 +22,9 @@ DEFINE_string(metrics, "",
               "if set: overrides metrics.compute of every config, e.g. E_rig,E_str skips E_geo "
               "(its column is then empty)");
 DEFINE_int32(retrieval_points, 1000, "points sampled per shape for retrieval");
-DEFINE_bool(progress, true, "progress bar on stderr (only when it is a terminal)");
+DEFINE_bool(progress, true,
+            "on a terminal: a progress line (shapes done, elapsed time) rewritten in place on "
+            "stderr; when stderr is a file or a pipe, the per-shape lines alone");
 
 int main(int argc, char** argv) {
   unfold::app::AppHelp help;
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
     if (!FLAGS_metrics.empty()) options.overrides["metrics.compute"] = FLAGS_metrics;
     if (FLAGS_retrieval_points < 4) throw unfold::UsageError("--retrieval_points must be >= 4");
     options.retrieval.sample_points = FLAGS_retrieval_points;
-    options.progress = FLAGS_progress;
+    options.progress = FLAGS_progress && unfold::app::stderr_is_terminal();
     int failed = 0;
     for (const auto& row : unfold::run_batch(options)) failed += row.status != "ok";
     if (failed > 0)

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/progress.h"
 #include "metrics/graph_geodesics.h"
 
 namespace unfold {
@@ -101,6 +102,7 @@ GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
   const int n = graph.num_vertices;
   if (P.rows() != n || Q.rows() != n || n < 2)
     throw UsageError("geodesic_error: need P and Q with one row per graph vertex, n >= 2");
+  report_stage("E_geo of " + std::to_string(n) + " vertices");
   bool exact = false;
   const std::vector<int> sources = landmark_sources(n, options, &exact);
   // Each row's sums as soon as its distances are known: no n x sources matrix.

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/progress.h"
 
 namespace unfold {
 
@@ -15,6 +16,7 @@ StretchError stretch_error(const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
     throw UsageError("stretch_error: need P and Q of equal size with at least 2 rows");
   if (options.exact_limit < 0 || options.sample_pairs < 2)
     throw UsageError("stretch_error: need exact_limit >= 0 and sample_pairs >= 2");
+  report_stage("E_str of " + std::to_string(n) + " vertices");
   StretchError result;
   if (n <= options.exact_limit) {
     std::vector<double> row_sum(size_t(n), 0.0);

@@ -22,6 +22,8 @@
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/output_transaction.h"
+#include "core/progress.h"
+#include "core/terminal_progress.h"
 #include "mesh/mesh_format.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
@@ -200,6 +202,7 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
     ::close(fd);
   }
   omp_set_num_threads(threads);
+  set_progress_listener(nullptr);  // the parent's terminal is not the child's
   int code = 0;
   try {
     run_shape(mesh_path, options, methods, out);
@@ -215,40 +218,6 @@ std::string describe_exit(int status) {
   if (WIFSIGNALED(status)) return "crashed (signal " + std::to_string(WTERMSIG(status)) + ")";
   return "exited with code " + std::to_string(WEXITSTATUS(status)) + " without a result";
 }
-
-std::string format_duration(double seconds) {
-  std::ostringstream s;
-  const int total = int(seconds);
-  s << total / 60 << "m" << std::setw(2) << std::setfill('0') << total % 60 << "s";
-  return s.str();
-}
-
-class Progress {
- public:
-  Progress(int total, bool enabled) : total_(total), enabled_(enabled && ::isatty(STDERR_FILENO)) {}
-  void update(int done, int running) {
-    if (!enabled_) return;
-    const int width = 30, filled = total_ > 0 ? width * done / total_ : width;
-    std::fprintf(stderr, "\r\033[K[%s%s] %d/%d shapes, %d running, %s",
-                 std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), done,
-                 total_, running, format_duration(seconds_since(start_)).c_str());
-    std::fflush(stderr);
-  }
-  // A line above the bar.
-  void print(const std::string& line) {
-    if (enabled_) std::fprintf(stderr, "\r\033[K");
-    std::fprintf(stdout, "%s\n", line.c_str());
-    std::fflush(stdout);
-  }
-  void finish() {
-    if (enabled_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  int total_;
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 // The forms retrieval compares: "raw" (the input poses), then each method.
 std::vector<std::string> retrieval_labels(const std::vector<std::string>& methods) {
@@ -430,10 +399,16 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
   const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
   std::map<pid_t, std::pair<std::string, std::chrono::steady_clock::time_point>> running;
   std::map<std::string, std::string> exit_problems;
-  Progress progress(int(todo.size()), o.progress);
-  progress.print("unfold_batch: " + std::to_string(todo.size()) + " shapes to run (" +
-                 std::to_string(meshes.size() - todo.size()) + " kept), " +
-                 std::to_string(methods.size()) + " configs, " + std::to_string(o.jobs) + " jobs");
+  TerminalProgress progress("unfold_batch", stderr, o.progress);
+  const auto show = [&progress, &todo, &running](int finished) {
+    progress.set({"unfolding (" + std::to_string(running.size()) + " running)", "shapes", finished,
+                  int(todo.size())});
+  };
+  progress.print_line("unfold_batch: " + std::to_string(todo.size()) + " shapes to run (" +
+                          std::to_string(meshes.size() - todo.size()) + " kept), " +
+                          std::to_string(methods.size()) + " configs, " + std::to_string(o.jobs) +
+                          " jobs",
+                      stdout);
   size_t next = 0;
   int finished = 0;
   while (next < todo.size() || !running.empty()) {
@@ -447,9 +422,14 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
       if (pid == 0) run_child(mesh, options, methods, out, threads);
       running[pid] = {mesh, std::chrono::steady_clock::now()};
     }
-    progress.update(finished, int(running.size()));
+    show(finished);
     int status = 0;
-    const pid_t pid = ::waitpid(-1, &status, 0);
+    // On a terminal the elapsed time runs on while the shapes do.
+    pid_t pid = ::waitpid(-1, &status, progress.active() ? WNOHANG : 0);
+    for (; pid == 0; pid = ::waitpid(-1, &status, WNOHANG)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      progress.redraw_if_due();
+    }
     if (pid < 0 || !running.count(pid)) continue;
     const auto [mesh, start] = running[pid];
     running.erase(pid);
@@ -465,9 +445,8 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
            << (rows[k] ? std::to_string(int(rows[k]->seconds + 0.5)) + " s " +
                              (rows[k]->status == "ok" ? "ok" : "FAILED")
                        : "no result");
-    progress.print(line.str());
+    progress.print_line(line.str(), stdout);
   }
-  progress.update(finished, 0);
   progress.finish();
 
   std::vector<BatchRow> rows;

@@ -7,6 +7,7 @@
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "geometry/best_rotation.h"
 #include "geometry/rotations.h"
 #include "mesh/cell_covariances.h"
@@ -24,6 +25,8 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       options.anderson < 0)
     throw UsageError("arap_solve: max_iterations, tolerance, anchor and anderson must be >= 0");
   if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
+  report_stage("ARAP steps, " + std::to_string(m) + " free vertices" +
+               (options.anchor > 0 ? ", anchored" : ""));
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
   // to held vertices go to the right side.
   Eigen::SparseMatrix<double> L = graph_laplacian(graph).bottomRightCorner(m, m);
@@ -117,6 +120,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   int it = 0;
   while (it < options.max_iterations) {
     ++it;
+    report_step(it, options.max_iterations);
     // d/dq_i of the energy = 0 for the free rows, R held.
     ldlt.solve(fixed_rhs + B, &free);
     const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();

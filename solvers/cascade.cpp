@@ -3,7 +3,9 @@
 #include <glog/logging.h>
 
 #include <iomanip>
+#include <sstream>
 
+#include "core/progress.h"
 #include "metrics/edge_ratio.h"
 #include "solvers/unfold_problem.h"
 
@@ -20,6 +22,10 @@ CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
                            options.break_in_band, options.anderson};
   for (int cascade = 1; cascade <= options.num_cascades; ++cascade) {
     if (cascade > 1) beta *= options.growth;
+    std::ostringstream name;
+    name << std::setprecision(3) << "cascade " << cascade << "/" << options.num_cascades
+         << ", beta " << beta << ", " << problem.num_vertices() << " vertices";
+    report_stage(name.str());
     backend.set_beta(beta);
     const size_t before = result.history.size();
     result.reached_band = backend.run_stage(stage, cascade, &Q, &energy, &result.history);

@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "mesh/edge_graph.h"
 #include "metrics/pose_invariance.h"
 
@@ -203,6 +204,7 @@ std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh
     throw UsageError("tets_bridging_contact: " + std::to_string(surface.V.rows()) +
                      " surface vertices for a tet mesh with " + std::to_string(ns));
   check_geodesic(geodesic, "tets_bridging_contact");
+  report_stage("looking for tets that bridge a contact");
   const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
   const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic);
   std::vector<int> out;

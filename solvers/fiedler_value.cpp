@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "core/errors.h"
+#include "core/progress.h"
 #include "solvers/lobpcg.h"
 
 namespace unfold {
@@ -70,6 +71,7 @@ double fiedler_value(const Eigen::SparseMatrix<double>& L, const Eigen::VectorXd
   const Eigen::Index n = L.rows();
   if (n < 2) throw NumericalError("lambda_2 needs a graph of at least 2 vertices");
   check_masses(L, masses);
+  report_stage("lambda_2 of " + std::to_string(n) + " vertices");
   // A shift far below lambda_2 (masses scale the eigenvalues by 1 / their mean).
   const double sigma = -1e-8 * L.diagonal().maxCoeff() / (masses.size() ? masses.mean() : 1.0);
   ProjectedShiftSolve op(L, masses);
@@ -85,6 +87,7 @@ double fiedler_value(const Eigen::SparseMatrix<double>& L, const Eigen::VectorXd
 double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg,
                      const Eigen::VectorXd& masses) {
   if (L.rows() < 100) return fiedler_value(L, masses);
+  report_stage("lambda_2 of " + std::to_string(L.rows()) + " vertices (LOBPCG)");
   const LobpcgResult r = lobpcg_smallest(CsrView::of_symmetric(L), amg, {}, masses);
   if (!r.converged)
     throw NumericalError("LOBPCG for lambda_2 did not converge (relative residual " +

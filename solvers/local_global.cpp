@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/progress.h"
 #include "energies/quadratic_term.h"
 #include "energies/rotation_term.h"
 #include "metrics/edge_ratio.h"
@@ -177,6 +178,7 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     }
     const double delta = edge_ratio(*problem.graph, rest_lengths_, *Q);
     history->push_back({iteration, cascade, data_.beta, energy, delta});
+    report_step(i, options.max_iterations);
     VLOG(1) << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
             << " energy " << energy << " edge ratio " << delta;
     if (options.break_in_band && in_band(delta, options.edge_ratio_band)) return true;

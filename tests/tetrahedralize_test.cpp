@@ -97,5 +97,29 @@ TEST(Tetrahedralize, UnknownRouteIsAUsageError) {
   EXPECT_THROW(tetrahedralize(test::octahedron(), options), UsageError);
 }
 
+// auto's conforming try runs while the intersecting faces are counted and is
+// stopped when they are found: the caller's give_up ends TetGen's process.
+TEST(Tetrahedralize, ConformingTryCanBeGivenUp) {
+  const SurfaceMesh sphere = test::uv_sphere(12, 24);
+  try {
+    tetrahedralize_conforming(sphere, 2.0, 0, [] { return true; });
+    FAIL() << "not given up before it started";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("given up"), std::string::npos) << e.what();
+  }
+  // Asked again while TetGen runs (every few milliseconds): the second answer
+  // stops it; a sphere this fine takes TetGen far longer than two polls.
+  const SurfaceMesh fine = test::uv_sphere(160, 320);
+  int asked = 0;
+  EXPECT_THROW(tetrahedralize_conforming(fine, 2.0, 0, [&asked] { return ++asked > 2; }),
+               NumericalError);
+  EXPECT_EQ(asked, 3);
+  // Never giving up changes nothing.
+  const TetMesh kept = tetrahedralize_conforming(sphere, 2.0, 0, [] { return false; });
+  const TetMesh plain = tetrahedralize_conforming(sphere, 2.0);
+  EXPECT_EQ(kept.V, plain.V);
+  EXPECT_EQ(kept.T, plain.T);
+}
+
 }  // namespace
 }  // namespace unfold

@@ -1,6 +1,7 @@
 #include "tetra/run_tetgen.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -82,8 +83,11 @@ bool write_all(int fd, const void* data, size_t size) {
 
 }  // namespace
 
-TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::string& what) {
+TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::string& what,
+                        const std::function<bool()>& give_up) {
   static_assert(sizeof(REAL) == sizeof(double), "TetGen built with REAL = double");
+  const std::string given_up = what + ": given up (its result would not be used)";
+  if (give_up && give_up()) throw NumericalError(given_up);
   int fds[2];
   if (::pipe(fds) != 0) throw NumericalError(what + ": cannot create a pipe for TetGen");
   const pid_t pid = ::fork();
@@ -100,6 +104,17 @@ TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::st
   std::vector<char> data;
   char buffer[1 << 16];
   while (true) {
+    if (give_up) {
+      pollfd ready = {fds[0], POLLIN, 0};
+      if (::poll(&ready, 1, 2) == 0) {
+        if (!give_up()) continue;
+        ::kill(pid, SIGKILL);
+        ::close(fds[0]);
+        while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+        throw NumericalError(given_up);
+      }
+    }
     const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;

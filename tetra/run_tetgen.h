@@ -8,6 +8,7 @@
 #include <tetgen.h>
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 
 namespace unfold {
@@ -21,7 +22,12 @@ struct TetgenOutput {
 /// @param switches TetGen command-line switches; must include 'z' (0-based) and 'Q'
 /// @param in       the input (points, facets)
 /// @param what     name of the caller's route, for error messages
-/// @throws NumericalError naming TetGen's error kind, or the signal if it crashed
-TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::string& what);
+/// @param give_up  if set, asked before TetGen starts and every few
+///                 milliseconds while it runs: true ends TetGen's process (the
+///                 caller learnt meanwhile that the result will not be used)
+/// @throws NumericalError naming TetGen's error kind, or the signal if it
+///         crashed, or that it was given up
+TetgenOutput run_tetgen(const std::string& switches, tetgenio& in, const std::string& what,
+                        const std::function<bool()>& give_up = {});
 
 }  // namespace unfold

@@ -3,24 +3,30 @@
 #include <glog/logging.h>
 
 #include <chrono>
+#include <functional>
 #include <future>
 #include <optional>
+#include <utility>
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "mesh/position_order.h"
 #include "tetra/intersecting_faces.h"
 
 namespace unfold {
 namespace {
 
-// Why TetGen's conforming mode cannot take this surface, known before running
-// it ("" when it may): it refuses any pair of intersecting faces, and it
-// merges vertices at equal positions, which drops a surface vertex.
-std::string not_a_plc(const SurfaceMesh& surface, int num_intersecting_faces) {
-  if (num_intersecting_faces > 0)
-    return "the surface intersects itself (" + std::to_string(num_intersecting_faces) +
-           " face pairs): not a valid PLC, conforming route not tried";
+// TetGen's conforming mode refuses any pair of intersecting faces, and it
+// merges vertices at equal positions, which drops a surface vertex: why it
+// cannot take this surface, known before running it ("" when it may).
+std::string intersections_refusal(int num_intersecting_faces) {
+  if (num_intersecting_faces == 0) return "";
+  return "the surface intersects itself (" + std::to_string(num_intersecting_faces) +
+         " face pairs): not a valid PLC, conforming route not tried";
+}
+
+std::string duplicates_refusal(const SurfaceMesh& surface) {
   const std::vector<int> order = position_order(surface.V);
   for (size_t k = 1; k < order.size(); ++k)
     if (surface.V.row(order[k]) == surface.V.row(order[k - 1]))
@@ -40,44 +46,75 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   if (options.route != "conforming" && options.route != "robust" && options.route != "auto")
     throw UsageError("unknown tetrahedralization route '" + options.route +
                      "' (known: auto, conforming, robust)");
+  report_stage("tetrahedralizing " + std::to_string(surface.faces.size()) + " faces");
   // Counted on every route (unless the caller did): a fraction of a second on
   // 55k faces, and it says why auto falls back (TetGen's conforming mode
-  // refuses any such pair). From kMinParallelRows vertices the robust route's
-  // first steps are taken on the other core meanwhile, speculatively for auto
-  // (most real scans go robust; a clean surface drops them).
+  // refuses any such pair). It runs on the other core while this one goes on:
+  // from kMinParallelRows vertices with the robust route's first steps,
+  // speculatively for auto (most real scans go robust; a clean surface drops
+  // them); below, auto's conforming try starts at once, in TetGen's process,
+  // and is stopped as soon as the count finds a pair (TetGen would only refuse
+  // the surface, after seconds of work).
   const bool counted = known_intersecting_faces >= 0;
-  std::future<int> count;
-  if (!counted)
+  std::shared_future<int> count;
+  if (counted) {
+    std::promise<int> known;
+    known.set_value(known_intersecting_faces);
+    count = known.get_future().share();
+  } else {
     count = std::async(std::launch::async, [&surface] {
-      return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
-    });
+              return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
+            }).share();
+  }
   std::optional<RobustStart> first_steps;
   if (options.route == "robust" ||
       (options.route == "auto" &&
        (counted ? known_intersecting_faces > 0 : surface.V.rows() >= kMinParallelRows)))
     first_steps = robust_start(surface);
-  r.num_intersecting_faces = counted ? known_intersecting_faces : count.get();
   const auto robust = [&] {
     if (!first_steps) first_steps = robust_start(surface);
     r.route = "robust";
+    report_stage("tetrahedralizing " + std::to_string(surface.faces.size()) +
+                 " faces (robust route)");
     return tetrahedralize_robust(surface, *first_steps, &r);
   };
   TetMesh tets;
   if (options.route == "conforming") {
+    r.num_intersecting_faces = count.get();
     tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
     r.route = "conforming";
   } else if (options.route == "robust") {
+    r.num_intersecting_faces = count.get();
     tets = robust();
   } else {
     // Most real scans intersect themselves: TetGen would only refuse them,
     // after seconds of work (docs/tetrahedralization.md).
-    r.fallback = not_a_plc(surface, r.num_intersecting_faces);
-    if (r.fallback.empty()) {
+    const std::string duplicates = duplicates_refusal(surface);
+    const auto conforming = [&](const std::function<bool()>& give_up) {
       try {
-        tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
-        r.route = "conforming";
+        return std::optional<TetMesh>(
+            tetrahedralize_conforming(surface, options.quality, options.max_volume, give_up));
       } catch (const NumericalError& e) {
         r.fallback = e.what();
+        return std::optional<TetMesh>();
+      }
+    };
+    std::optional<TetMesh> made;
+    if (!first_steps && duplicates.empty())
+      made = conforming([&count] {
+        return count.wait_for(std::chrono::seconds(0)) == std::future_status::ready &&
+               count.get() > 0;
+      });
+    r.num_intersecting_faces = count.get();
+    const std::string refusal =
+        r.num_intersecting_faces > 0 ? intersections_refusal(r.num_intersecting_faces) : duplicates;
+    if (!refusal.empty()) {
+      r.fallback = refusal;  // whatever became of the try
+    } else {
+      if (first_steps) made = conforming({});
+      if (made) {
+        tets = std::move(*made);
+        r.route = "conforming";
       }
     }
     if (r.route.empty()) {

@@ -3,6 +3,7 @@
 // one function; the route used is reported.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "mesh/surface_mesh.h"
@@ -65,8 +66,10 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options,
 /// TetGen in boundary-conforming mode with no Steiner points on the surface
 /// (switches -pYq, and -a when max_volume > 0: more interior points, for scale
 /// tests). Needs a clean piecewise-linear complex: no self-intersections.
-TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality,
-                                  double max_volume = 0);
+/// @param give_up see run_tetgen (tetra/run_tetgen.h)
+/// @throws NumericalError when TetGen fails or is given up
+TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality, double max_volume = 0,
+                                  const std::function<bool()>& give_up = {});
 
 /// The robust route's first steps, which need the surface alone: the
 /// winding-number tree, the orientation and the interior grid points.

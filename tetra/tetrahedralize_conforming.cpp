@@ -7,7 +7,8 @@
 
 namespace unfold {
 
-TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality, double max_volume) {
+TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality, double max_volume,
+                                  const std::function<bool()>& give_up) {
   const int n = int(surface.V.rows());
   tetgenio in;
   in.firstnumber = 0;
@@ -34,7 +35,8 @@ TetMesh tetrahedralize_conforming(const SurfaceMesh& surface, double quality, do
   switches << "pYzQ";
   if (quality > 0) switches << "q" << quality;
   if (max_volume > 0) switches << "a" << max_volume;
-  TetgenOutput out = run_tetgen(switches.str(), in, "tetrahedralization (conforming route)");
+  TetgenOutput out =
+      run_tetgen(switches.str(), in, "tetrahedralization (conforming route)", give_up);
   if (out.points.rows() < n || out.tets.rows() == 0)
     throw NumericalError("TetGen (conforming route) produced no usable tetrahedra");
   TetMesh tets;

@@ -1,0 +1,22 @@
+#include "core/progress.h"
+
+#include <atomic>
+
+namespace unfold {
+namespace {
+
+std::atomic<ProgressListener*> installed{nullptr};
+
+}  // namespace
+
+void set_progress_listener(ProgressListener* listener) { installed.store(listener); }
+
+void report_stage(const std::string& name) {
+  if (ProgressListener* listener = installed.load()) listener->stage(name);
+}
+
+void report_step(int done, int total) {
+  if (ProgressListener* listener = installed.load()) listener->step(done, total);
+}
+
+}  // namespace unfold

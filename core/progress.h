@@ -1,0 +1,33 @@
+// Progress of the long stages (tetrahedralization, the solves, the metrics)
+// for a display an app may install. The library only reports; whether and how
+// to show it is the app's choice (apps/ knows whether stderr is a terminal,
+// core/terminal_progress.h draws it).
+#pragma once
+
+#include <string>
+
+namespace unfold {
+
+/// Receives the progress reports of the whole process, on the thread that
+/// reports (the library reports from its serial parts only).
+class ProgressListener {
+ public:
+  virtual ~ProgressListener() = default;
+  /// A stage begins, e.g. "tetrahedralizing", "cascade 2/4, beta 3.2e6".
+  virtual void stage(const std::string& name) = 0;
+  /// Within the current stage: `done` of at most `total` steps (iterations).
+  virtual void step(int done, int total) = 0;
+};
+
+/// Installs `listener` for the whole process (nullptr: none, the default). The
+/// caller keeps it alive until it installs another one or nullptr.
+void set_progress_listener(ProgressListener* listener);
+
+/// A stage begins: tells the installed listener, if any.
+void report_stage(const std::string& name);
+
+/// `done` of at most `total` steps of the current stage: tells the installed
+/// listener, if any.
+void report_step(int done, int total);
+
+}  // namespace unfold
