@@ -52,10 +52,8 @@ Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
                                                                                               : pca;
 }
 
-Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-                            int sample_points) {
-  if (V.rows() < 4 || sample_points < 4)
-    throw UsageError("ORT needs at least 4 vertices and sample points");
+Eigen::MatrixX3d ort_normalise(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+  if (V.rows() < 4) throw UsageError("ORT needs at least 4 vertices");
   double area = 0;
   Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
@@ -65,7 +63,14 @@ Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   }
   if (area <= 0) throw UsageError("ORT: the mesh has zero area");
   const Eigen::MatrixX3d normalised = (V.rowwise() - centroid / area) / std::sqrt(area);
-  return every_kth_row(normalised, sample_points) * ort_orientation(normalised, F).transpose();
+  return normalised * ort_orientation(normalised, F).transpose();
+}
+
+Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                            int sample_points) {
+  if (V.rows() < 4 || sample_points < 4)
+    throw UsageError("ORT needs at least 4 vertices and sample points");
+  return every_kth_row(ort_normalise(V, F), sample_points);
 }
 
 double mean_squared_point_error(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B) {
