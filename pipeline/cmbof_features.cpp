@@ -1,22 +1,21 @@
 #include "pipeline/cmbof_features.h"
 
-#include "metrics/ort_dissimilarity.h"
 #include "metrics/view_sphere.h"
 #include "render/depth_image.h"
 
 namespace unfold {
 
-CmbofFeatures cmbof_features(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+CmbofFeatures cmbof_features(const Eigen::MatrixX3d& normalised, const Eigen::MatrixX3i& F,
                              const CmbofOptions& options) {
-  Eigen::MatrixX3d normalised = ort_normalise(V, F);
-  normalised /= normalised.rowwise().norm().maxCoeff();  // into the unit ball, as the views need
+  // Into the unit ball, as the views need.
+  const Eigen::MatrixX3d V = normalised / normalised.rowwise().norm().maxCoeff();
   const Eigen::MatrixX3d directions = view_sphere_directions(options.view_subdivisions);
   std::vector<SiftDescriptors> per_view;
   CmbofFeatures features;
   features.view_start.push_back(0);
   for (Eigen::Index v = 0; v < directions.rows(); ++v) {
     per_view.push_back(sift_descriptors(
-        depth_image(normalised, F, directions.row(v).transpose(), options.image_size),
+        depth_image(V, F, directions.row(v).transpose(), options.image_size),
         options.features_per_view));
     features.view_start.push_back(features.view_start.back() + int(per_view.back().rows()));
   }

@@ -25,9 +25,11 @@ struct CmbofFeatures {
   int views() const { return int(view_start.size()) - 1; }
 };
 
-/// The features of the mesh (V, F) (triangles).
-/// @throws UsageError as ort_normalise, view_sphere_directions, depth_image
-CmbofFeatures cmbof_features(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+/// The features of a mesh with triangles F, from its ORT-normalised vertices.
+/// @param normalised ort_normalise(V, F) (metrics/ort_dissimilarity.h), which
+///        the descriptor shares with ORT
+/// @throws UsageError as view_sphere_directions, depth_image
+CmbofFeatures cmbof_features(const Eigen::MatrixX3d& normalised, const Eigen::MatrixX3i& F,
                              const CmbofOptions& options);
 
 /// Writes the features: a text line "<views> <rows>", the view offsets, then

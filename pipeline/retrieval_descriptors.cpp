@@ -56,8 +56,10 @@ const char* framework_name(RetrievalFramework framework) {
 
 RetrievalDescriptor retrieval_descriptor(const SurfaceMesh& mesh, const RetrievalOptions& options) {
   const Eigen::MatrixX3i F = triangulate_faces(mesh);
-  return {retrieval_sample(mesh.V, options), ort_sample(mesh.V, F, options.sample_points),
-          cmbof_features(mesh.V, F, options.cmbof), {}};
+  Eigen::MatrixX3d icp = retrieval_sample(mesh.V, options);  // checks the options first
+  const Eigen::MatrixX3d normalised = ort_normalise(mesh.V, F);
+  return {std::move(icp), evenly_spaced_rows(normalised, options.sample_points),
+          cmbof_features(normalised, F, options.cmbof), {}};
 }
 
 double framework_dissimilarity(RetrievalFramework framework, const RetrievalDescriptor& a,
