@@ -12,7 +12,7 @@ DEFINE_string(runs, "", "comma-separated unfold_batch output directories (requir
 DEFINE_string(labels, "", "comma-separated labels, one per run, appended to method names");
 DEFINE_string(markdown, "", "write the report here; empty: print it");
 DEFINE_string(plots_dir, "",
-              "write cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png, pr_icp.png, pr_ort.png here");
+              "write cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png, pr_icp.png, pr_ort.png, pr_cmbof.png here");
 
 namespace {
 std::vector<std::string> split(const std::string& text) {
