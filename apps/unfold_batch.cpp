@@ -22,6 +22,8 @@ DEFINE_string(metrics, "",
               "if set: overrides metrics.compute of every config, e.g. E_rig,E_str skips E_geo "
               "(its column is then empty)");
 DEFINE_int32(retrieval_points, 1000, "points sampled per shape for retrieval");
+DEFINE_int32(cmbof_words, 1500, "CMBOF retrieval: visual vocabulary size (k-means centres)");
+DEFINE_int32(cmbof_image_size, 256, "CMBOF retrieval: depth image width and height, pixels");
 DEFINE_bool(progress, true, "progress bar on stderr (only when it is a terminal)");
 
 int main(int argc, char** argv) {
@@ -34,7 +36,7 @@ int main(int argc, char** argv) {
   help.groups = {
       {"Input and output", {"input_dir", "output_dir", "skip_existing"}},
       {"Method and config", {"configs", "target_vertices"}},
-      {"Metrics and pictures", {"metrics", "retrieval_points"}},
+      {"Metrics and pictures", {"metrics", "retrieval_points", "cmbof_words", "cmbof_image_size"}},
       {"Batch", {"jobs", "shard", "progress"}},
   };
   return unfold::app::run_main("unfold_batch", help, argc, argv, [] {
@@ -56,6 +58,10 @@ int main(int argc, char** argv) {
     if (!FLAGS_metrics.empty()) options.overrides["metrics.compute"] = FLAGS_metrics;
     if (FLAGS_retrieval_points < 4) throw unfold::UsageError("--retrieval_points must be >= 4");
     options.retrieval.sample_points = FLAGS_retrieval_points;
+    if (FLAGS_cmbof_words < 1) throw unfold::UsageError("--cmbof_words must be >= 1");
+    if (FLAGS_cmbof_image_size < 8) throw unfold::UsageError("--cmbof_image_size must be >= 8");
+    options.retrieval.cmbof.words = FLAGS_cmbof_words;
+    options.retrieval.cmbof.image_size = FLAGS_cmbof_image_size;
     options.progress = FLAGS_progress;
     int failed = 0;
     for (const auto& row : unfold::run_batch(options)) failed += row.status != "ok";

@@ -26,6 +26,10 @@
 namespace unfold {
 namespace {
 
+// CMBOF's retrieval at a size that keeps these runs quick (its defaults: 1500
+// words, 256-pixel views).
+const std::string kCheapCmbof = "--cmbof_words 32 --cmbof_image_size 128";
+
 namespace fs = std::filesystem;
 
 // Every input class, plus a truncated file, as a batch input directory.
@@ -61,7 +65,7 @@ TEST(BatchMatrix, EveryShapeAndMethodIsRecordedAndFailuresDoNotStopTheRun) {
     fs::remove_all(out);
     const test::AppRun r = test::run_app(
         "unfold_batch", "--input_dir " + in + " --output_dir " + out + " --configs " +
-                            configs({0, 1, 2, 3}) + " --retrieval_points 100 --jobs " + jobs);
+                            configs({0, 1, 2, 3}) + " --retrieval_points 100 " + kCheapCmbof + " --jobs " + jobs);
     SCOPED_TRACE(std::string("--jobs ") + jobs);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
@@ -106,7 +110,7 @@ std::string tables(const std::string& out) {
 TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
   const test::TempDir dir;
   const std::string in = input_dir(dir), list = configs({0, 2});
-  const std::string args = " --configs " + list + " --retrieval_points 100 --jobs 1";
+  const std::string args = " --configs " + list + " --retrieval_points 100 " + kCheapCmbof + " --jobs 1";
   ASSERT_EQ(test::run_app("unfold_batch",
                           "--input_dir " + in + " --output_dir " + dir.file("straight") + args)
                 .exit_code,
@@ -123,7 +127,8 @@ TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
     dup2(null, STDERR_FILENO);
     const std::string bin = std::string(UNFOLD_BIN_DIR) + "/unfold_batch";
     execl(bin.c_str(), bin.c_str(), "--input_dir", in.c_str(), "--output_dir", out.c_str(),
-          "--configs", list.c_str(), "--retrieval_points", "100", "--jobs", "1", nullptr);
+          "--configs", list.c_str(), "--retrieval_points", "100", "--cmbof_words", "32",
+          "--cmbof_image_size", "128", "--jobs", "1", nullptr);
     _exit(127);
   }
   setpgid(pid, pid);

@@ -97,7 +97,8 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
                               " --output_dir " + out + " --configs " + UNFOLD_SOURCE_DIR +
                               "/configs/default.yaml," + UNFOLD_SOURCE_DIR +
-                              "/configs/lsmds.yaml --jobs 2 > " + dir.file("stdout") + " 2>&1";
+                              "/configs/lsmds.yaml --jobs 2 --cmbof_words 32 --cmbof_image_size 128 > " +
+                              dir.file("stdout") + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);
   const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
   ASSERT_EQ(rows.size(), 6u);
@@ -160,7 +161,8 @@ TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
     const std::string command =
         std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in + " --output_dir " +
         dir.file(out) + " --configs " + UNFOLD_SOURCE_DIR + "/configs/default.yaml --jobs 1 " +
-        "--retrieval_points 150 " + extra + " >> " + dir.file("log") + " 2>&1";
+        "--retrieval_points 150 --cmbof_words 32 --cmbof_image_size 128 " + extra + " >> " +
+        dir.file("log") + " 2>&1";
     return std::system(command.c_str());
   };
   ASSERT_EQ(batch("single", ""), 0);
