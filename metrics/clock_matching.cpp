@@ -30,15 +30,15 @@ double clock_matching_dissimilarity(const std::vector<WordHistogram>& a,
                                     const std::vector<std::vector<int>>& rotations) {
   if (a.size() != b.size() || rotations.empty())
     throw UsageError("clock matching: the shapes need equally many views and a rotation");
+  for (const std::vector<int>& p : rotations)
+    if (p.size() != a.size() ||
+        std::any_of(p.begin(), p.end(), [&](int v) { return v < 0 || size_t(v) >= b.size(); }))
+      throw UsageError("clock matching: a rotation does not fit the views");
   double best = std::numeric_limits<double>::infinity();
   for (const std::vector<int>& p : rotations) {
-    if (p.size() != a.size()) throw UsageError("clock matching: a rotation does not fit the views");
-    double sum = 0;
-    for (size_t v = 0; v < a.size() && sum < best; ++v) {
-      if (p[v] < 0 || size_t(p[v]) >= b.size())
-        throw UsageError("clock matching: a rotation does not fit the views");
+    double sum = 0;  // a rotation stops once it cannot beat the best
+    for (size_t v = 0; v < a.size() && sum < best; ++v)
       sum += histogram_distance(a[v], b[size_t(p[v])]);
-    }
     best = std::min(best, sum);
   }
   return best;

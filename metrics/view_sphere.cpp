@@ -11,7 +11,7 @@ namespace unfold {
 Eigen::MatrixX3d view_sphere_directions(int subdivisions) {
   if (subdivisions < 0 || subdivisions > 4)
     throw UsageError("view sphere: subdivisions must be in [0, 4]");
-  std::vector<Eigen::Vector3d> points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+  std::vector<Eigen::Vector3d> points = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                          {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   std::vector<Eigen::Vector3i> faces;
   for (int x : {0, 1})
@@ -47,8 +47,8 @@ std::vector<std::vector<int>> view_sphere_rotations(const Eigen::MatrixX3d& dire
     std::vector<int> p(static_cast<size_t>(n));
     for (Eigen::Index v = 0; v < n; ++v) {
       Eigen::Index nearest;
-      const double d = (directions.rowwise() - rotated.row(v)).rowwise().squaredNorm().minCoeff(
-          &nearest);
+      const double d =
+          (directions.rowwise() - rotated.row(v)).rowwise().squaredNorm().minCoeff(&nearest);
       if (d > 1e-12) throw UsageError("view sphere: a rotated direction is not a view");
       p[size_t(v)] = int(nearest);
     }

@@ -35,7 +35,8 @@ Eigen::MatrixXf learn_vocabulary(const Eigen::MatrixXf& features, int words, int
   // squared distance to the nearest centre so far.
   Eigen::MatrixXf centres(k, features.cols());
   centres.row(0) = features.row(Eigen::Index(random() % std::uint64_t(n)));
-  Eigen::VectorXd nearest = (features.rowwise() - centres.row(0)).rowwise().squaredNorm().cast<double>();
+  Eigen::VectorXd nearest =
+      (features.rowwise() - centres.row(0)).rowwise().squaredNorm().cast<double>();
   for (Eigen::Index c = 1; c < k; ++c) {
     const double target = uniform(random) * nearest.sum();
     Eigen::Index pick = 0;

@@ -610,10 +610,9 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
     const std::string vocabulary = prepare_cmbof(out, labels[m], &set, options);
     for (const RetrievalFramework f : kRetrievalFrameworks) {
       if (f == RetrievalFramework::cmbof && vocabulary.empty()) continue;
-      const Eigen::MatrixXd D =
-          assemble_similarity(set.descriptors, set.names, f, out.blocks(),
-                              out.block_prefix(labels[m], f), similarity_key(f, options, vocabulary),
-                              options);
+      const Eigen::MatrixXd D = assemble_similarity(
+          set.descriptors, set.names, f, out.blocks(), out.block_prefix(labels[m], f),
+          similarity_key(f, options, vocabulary), options);
       try {
         const RetrievalMeasures r = retrieval_measures(D, set_classes);
         retrieval << labels[m] << ',' << framework_name(f) << ',' << r.queries << ',' << r.nn << ','

@@ -77,11 +77,11 @@ std::vector<BatchRow> read_results_csv(const std::string& path);
 /// second_tier,e_measure,dcg,precision_0.05..precision_1.00 as
 /// metrics/retrieval_measures.h; the matrices similarity_<method>.csv,
 /// similarity_<method>_ort.csv and similarity_<method>_cmbof.csv, assembled
-/// from the block files of sharded runs and computed where none is found; the
-/// CMBOF vocabulary of each method's forms in descriptors/<method>.cmbof_vocabulary.txt) and pose invariance (pose_invariance.csv:
-/// class,method,pose_distance) for the raw input poses and each method's
-/// canonical forms found in output_dir; descriptors are read from their cache
-/// or computed and cached.
+/// from the block files of sharded runs and computed where none is found) and
+/// pose invariance (pose_invariance.csv: class,method,pose_distance) for the
+/// raw input poses and each method's canonical forms found in output_dir;
+/// descriptors are read from their cache or computed and cached, and so is
+/// each method's CMBOF vocabulary (descriptors/<method>.cmbof_vocabulary.txt).
 /// @param meshes input mesh paths; methods the config stems
 /// Unreadable input meshes are left out. @throws OutputError
 void write_dataset_evaluation(const std::string& output_dir, const std::vector<std::string>& meshes,

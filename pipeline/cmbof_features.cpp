@@ -14,9 +14,9 @@ CmbofFeatures cmbof_features(const Eigen::MatrixX3d& normalised, const Eigen::Ma
   CmbofFeatures features;
   features.view_start.push_back(0);
   for (Eigen::Index v = 0; v < directions.rows(); ++v) {
-    per_view.push_back(sift_descriptors(
-        depth_image(V, F, directions.row(v).transpose(), options.image_size),
-        options.features_per_view));
+    per_view.push_back(
+        sift_descriptors(depth_image(V, F, directions.row(v).transpose(), options.image_size),
+                         options.features_per_view));
     features.view_start.push_back(features.view_start.back() + int(per_view.back().rows()));
   }
   features.descriptors.resize(features.view_start.back(), 128);

@@ -27,7 +27,8 @@ Eigen::MatrixXd cmbof_matrix(const std::vector<SurfaceMesh>& shapes, const Cmbof
   std::vector<const CmbofFeatures*> features;
   for (const auto& descriptor : d) features.push_back(&descriptor.cmbof);
   const Eigen::MatrixXf vocabulary = cmbof_vocabulary(features, options);
-  for (auto& descriptor : d) descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
+  for (auto& descriptor : d)
+    descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
   RetrievalOptions retrieval;
   retrieval.cmbof = options;
   Eigen::MatrixXd D = similarity_block(d, RetrievalFramework::cmbof, 0, 1, retrieval);

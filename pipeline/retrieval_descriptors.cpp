@@ -47,9 +47,12 @@ const std::vector<std::vector<int>>& clock_rotations(int subdivisions) {
 
 const char* framework_name(RetrievalFramework framework) {
   switch (framework) {
-    case RetrievalFramework::icp: return "icp";
-    case RetrievalFramework::ort: return "ort";
-    case RetrievalFramework::cmbof: return "cmbof";
+    case RetrievalFramework::icp:
+      return "icp";
+    case RetrievalFramework::ort:
+      return "ort";
+    case RetrievalFramework::cmbof:
+      return "cmbof";
   }
   return "?";
 }
@@ -58,15 +61,19 @@ RetrievalDescriptor retrieval_descriptor(const SurfaceMesh& mesh, const Retrieva
   const Eigen::MatrixX3i F = triangulate_faces(mesh);
   Eigen::MatrixX3d icp = retrieval_sample(mesh.V, options);  // checks the options first
   const Eigen::MatrixX3d normalised = ort_normalise(mesh.V, F);
-  return {std::move(icp), evenly_spaced_rows(normalised, options.sample_points),
-          cmbof_features(normalised, F, options.cmbof), {}};
+  return {std::move(icp),
+          evenly_spaced_rows(normalised, options.sample_points),
+          cmbof_features(normalised, F, options.cmbof),
+          {}};
 }
 
 double framework_dissimilarity(RetrievalFramework framework, const RetrievalDescriptor& a,
                                const RetrievalDescriptor& b, const RetrievalOptions& options) {
   switch (framework) {
-    case RetrievalFramework::icp: return shape_dissimilarity(a.icp, b.icp, options);
-    case RetrievalFramework::ort: return ort_dissimilarity(a.ort, b.ort, options.icp_iterations);
+    case RetrievalFramework::icp:
+      return shape_dissimilarity(a.icp, b.icp, options);
+    case RetrievalFramework::ort:
+      return ort_dissimilarity(a.ort, b.ort, options.icp_iterations);
     case RetrievalFramework::cmbof:
       if (a.cmbof_histograms.empty() || b.cmbof_histograms.empty())
         throw UsageError("CMBOF: the word histograms are not computed (no vocabulary yet)");
@@ -94,20 +101,24 @@ std::string similarity_key(RetrievalFramework framework, const RetrievalOptions&
                            const std::string& vocabulary_fingerprint) {
   if (framework == RetrievalFramework::cmbof)
     return "cmbof " + cmbof_options_key(options.cmbof) + " vocabulary=" + vocabulary_fingerprint;
-  return std::string(framework_name(framework)) + " points=" +
-         std::to_string(options.sample_points) + " icp=" + std::to_string(options.icp_iterations);
+  return std::string(framework_name(framework)) +
+         " points=" + std::to_string(options.sample_points) +
+         " icp=" + std::to_string(options.icp_iterations);
 }
 
 void write_retrieval_descriptor(const std::string& path, const RetrievalDescriptor& descriptor,
                                 const RetrievalOptions& options) {
-  write_file_atomically(path, [&](std::ostream& s) {
-    s << kMagic << '\n'
-      << retrieval_options_key(options) << '\n'
-      << std::setprecision(std::numeric_limits<double>::max_digits10);
-    write_points(s, descriptor.icp);
-    write_points(s, descriptor.ort);
-    write_cmbof_features(s, descriptor.cmbof);
-  }, true);
+  write_file_atomically(
+      path,
+      [&](std::ostream& s) {
+        s << kMagic << '\n'
+          << retrieval_options_key(options) << '\n'
+          << std::setprecision(std::numeric_limits<double>::max_digits10);
+        write_points(s, descriptor.icp);
+        write_points(s, descriptor.ort);
+        write_cmbof_features(s, descriptor.cmbof);
+      },
+      true);
 }
 
 std::optional<RetrievalDescriptor> read_retrieval_descriptor(const std::string& path,

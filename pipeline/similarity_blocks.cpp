@@ -74,8 +74,7 @@ int read_similarity_block(const std::string& path, const std::vector<std::string
   std::ifstream in(path);
   std::string magic, stored_key, header;
   if (!std::getline(in, magic) || magic != kMagic || !std::getline(in, stored_key) ||
-      stored_key != key || !std::getline(in, header) ||
-      header != shape_header(names))
+      stored_key != key || !std::getline(in, header) || header != shape_header(names))
     return 0;
   std::map<std::string, Eigen::Index> index;
   for (size_t i = 0; i < names.size(); ++i) index[names[i]] = Eigen::Index(i);

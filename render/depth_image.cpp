@@ -13,8 +13,7 @@ GrayImage depth_image(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   const Eigen::Vector3d toward = -direction;  // from the camera into the scene
   Eigen::Index least;
   toward.cwiseAbs().minCoeff(&least);
-  const Eigen::Vector3d up =
-      (Eigen::Vector3d::Unit(least) - toward * toward[least]).normalized();
+  const Eigen::Vector3d up = (Eigen::Vector3d::Unit(least) - toward * toward[least]).normalized();
   const Eigen::Vector3d right = up.cross(toward);
   // Pixel x right, y down; depth from the plane one unit in front of the origin.
   Eigen::MatrixX3d screen(V.rows(), 3);

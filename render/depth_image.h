@@ -11,7 +11,7 @@ namespace unfold {
 
 /// An 8-bit grey image, row-major, top row first.
 struct GrayImage {
-  int size = 0;                     ///< width = height
+  int size = 0;                      ///< width = height
   std::vector<std::uint8_t> pixels;  ///< size * size
 };
 

@@ -63,9 +63,10 @@ TEST(BatchMatrix, EveryShapeAndMethodIsRecordedAndFailuresDoNotStopTheRun) {
   const std::string in = input_dir(dir), out = dir.file("out");
   for (const char* jobs : {"2", "1 --target_vertices 50"}) {
     fs::remove_all(out);
-    const test::AppRun r = test::run_app(
-        "unfold_batch", "--input_dir " + in + " --output_dir " + out + " --configs " +
-                            configs({0, 1, 2, 3}) + " --retrieval_points 100 " + kCheapCmbof + " --jobs " + jobs);
+    const test::AppRun r =
+        test::run_app("unfold_batch", "--input_dir " + in + " --output_dir " + out + " --configs " +
+                                          configs({0, 1, 2, 3}) + " --retrieval_points 100 " +
+                                          kCheapCmbof + " --jobs " + jobs);
     SCOPED_TRACE(std::string("--jobs ") + jobs);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
@@ -110,7 +111,8 @@ std::string tables(const std::string& out) {
 TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
   const test::TempDir dir;
   const std::string in = input_dir(dir), list = configs({0, 2});
-  const std::string args = " --configs " + list + " --retrieval_points 100 " + kCheapCmbof + " --jobs 1";
+  const std::string args =
+      " --configs " + list + " --retrieval_points 100 " + kCheapCmbof + " --jobs 1";
   ASSERT_EQ(test::run_app("unfold_batch",
                           "--input_dir " + in + " --output_dir " + dir.file("straight") + args)
                 .exit_code,

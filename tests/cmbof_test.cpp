@@ -88,7 +88,8 @@ TEST(VisualVocabulary, KMeansFindsSeparatedClustersDeterministically) {
   }
   // Rows 0-3 are of clusters 0, 1, 2, 0.
   const std::map<int, int> counts = {{nearest[0], 2}, {nearest[1], 1}, {nearest[2], 1}};
-  EXPECT_EQ(word_histogram(words, features.topRows(4)), WordHistogram(counts.begin(), counts.end()));
+  EXPECT_EQ(word_histogram(words, features.topRows(4)),
+            WordHistogram(counts.begin(), counts.end()));
   EXPECT_EQ(learn_vocabulary(features, 100, 2, 1).rows(), 60) << "at most one word per feature";
   EXPECT_THROW(learn_vocabulary(Eigen::MatrixXf(0, 128), 3, 10, 1), UsageError);
 }
@@ -125,13 +126,12 @@ SurfaceMesh box(double a, double b, double c) {
 TEST(Cmbof, InvariantToPoseNormalisationAndSeparatesTwoClasses) {
   RetrievalOptions options;
   options.cmbof.image_size = 128, options.cmbof.words = 64;
-  std::vector<SurfaceMesh> shapes = {
-      make_articulated_shape(ShapePose::rest(), 24),
-      make_articulated_shape(ShapePose::preset(0), 24),
-      make_articulated_shape(ShapePose::preset(1), 24),
-      box(1, 0.7, 0.4),
-      box(1, 0.6, 0.45),
-      box(1, 0.75, 0.35)};
+  std::vector<SurfaceMesh> shapes = {make_articulated_shape(ShapePose::rest(), 24),
+                                     make_articulated_shape(ShapePose::preset(0), 24),
+                                     make_articulated_shape(ShapePose::preset(1), 24),
+                                     box(1, 0.7, 0.4),
+                                     box(1, 0.6, 0.45),
+                                     box(1, 0.75, 0.35)};
   // A copy of the first animal turned, scaled and moved.
   shapes.push_back({((3.5 * shapes[0].V) * test::random_rotation(5).transpose()).rowwise() +
                         Eigen::RowVector3d(1, -2, 4),
@@ -141,7 +141,8 @@ TEST(Cmbof, InvariantToPoseNormalisationAndSeparatesTwoClasses) {
   for (const SurfaceMesh& s : shapes) d.push_back(retrieval_descriptor(s, options));
   for (const auto& descriptor : d) features.push_back(&descriptor.cmbof);
   const Eigen::MatrixXf vocabulary = cmbof_vocabulary(features, options.cmbof);
-  for (auto& descriptor : d) descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
+  for (auto& descriptor : d)
+    descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
   const auto D = [&](size_t i, size_t j) {
     return framework_dissimilarity(RetrievalFramework::cmbof, d[i], d[j], options);
   };

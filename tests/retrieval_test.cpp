@@ -159,7 +159,8 @@ TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
   }
   for (const auto& descriptor : d) features.push_back(&descriptor.cmbof);
   const Eigen::MatrixXf vocabulary = cmbof_vocabulary(features, options.cmbof);
-  for (auto& descriptor : d) descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
+  for (auto& descriptor : d)
+    descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
   const test::TempDir dir;
   const std::string blocks = dir.file("blocks");
   std::filesystem::create_directories(blocks);
@@ -182,9 +183,9 @@ TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
     EXPECT_EQ(rows, 5);
     for (int i = 0; i < 5; ++i)
       for (int j = i + 1; j < 5; ++j) EXPECT_EQ(read(i, j), one_go(i, j)) << i << "," << j;
-    EXPECT_EQ(
-        assemble_similarity(d, names, f, blocks, "m_" + std::string(framework_name(f)), key, options),
-        one_go);
+    EXPECT_EQ(assemble_similarity(d, names, f, blocks, "m_" + std::string(framework_name(f)), key,
+                                  options),
+              one_go);
     // Another shape list or other options: the block is not used.
     std::vector<std::string> other = names;
     other[4] = "t";
