@@ -9,8 +9,8 @@
 namespace unfold {
 
 Eigen::MatrixX3d view_sphere_directions(int subdivisions) {
-  if (subdivisions < 0 || subdivisions > 4)
-    throw UsageError("view sphere: subdivisions must be in [0, 4]");
+  if (subdivisions < 0 || subdivisions > 3)
+    throw UsageError("view sphere: subdivisions must be in [0, 3]");
   std::vector<Eigen::Vector3d> points = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                          {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
   std::vector<Eigen::Vector3i> faces;

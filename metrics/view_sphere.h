@@ -15,7 +15,8 @@ namespace unfold {
 /// triangle split into four `subdivisions` times, new vertices pushed onto the
 /// sphere; 6, 18, 66, 258 directions for 0, 1, 2, 3 subdivisions.
 /// Deterministic order, the octahedron's vertices first.
-/// @throws UsageError for subdivisions outside [0, 4]
+/// @throws UsageError for subdivisions outside [0, 3] (the view counts CM-BOF
+///         studies)
 Eigen::MatrixX3d view_sphere_directions(int subdivisions);
 
 /// For each of the 24 rotations R of the octahedron (cube_rotations()), the

@@ -1,6 +1,7 @@
 #include "metrics/visual_vocabulary.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 
@@ -34,17 +35,19 @@ Eigen::MatrixXf learn_vocabulary(const Eigen::MatrixXf& features, int words, int
   // k-means++: each next centre drawn with probability proportional to the
   // squared distance to the nearest centre so far.
   Eigen::MatrixXf centres(k, features.cols());
-  centres.row(0) = features.row(Eigen::Index(random() % std::uint64_t(n)));
-  Eigen::VectorXd nearest =
-      (features.rowwise() - centres.row(0)).rowwise().squaredNorm().cast<double>();
-  for (Eigen::Index c = 1; c < k; ++c) {
-    const double target = uniform(random) * nearest.sum();
-    Eigen::Index pick = 0;
+  Eigen::VectorXd nearest = Eigen::VectorXd::Constant(n, INFINITY);
+  Eigen::Index pick = Eigen::Index(random() % std::uint64_t(n));
+  for (Eigen::Index c = 0;;) {
+    centres.row(c) = features.row(pick);
+    double total = 0;
+    for (Eigen::Index i = 0; i < n; ++i)  // row by row: no n x d temporary
+      total += nearest[i] =
+          std::min(nearest[i], double((features.row(i) - centres.row(c)).squaredNorm()));
+    if (++c == k) break;
+    const double target = uniform(random) * total;
+    pick = 0;
     for (double sum = 0; pick + 1 < n; ++pick)
       if ((sum += nearest[pick]) > target) break;
-    centres.row(c) = features.row(pick);
-    nearest = nearest.cwiseMin(
-        (features.rowwise() - centres.row(c)).rowwise().squaredNorm().cast<double>());
   }
   for (int it = 0; it < iterations; ++it) {
     const Eigen::VectorXi assigned = nearest_words(centres, features);

@@ -35,11 +35,11 @@ bool read_points(std::istream& s, Eigen::MatrixX3d* P) {
 const std::vector<std::vector<int>>& clock_rotations(int subdivisions) {
   static const std::vector<std::vector<std::vector<int>>> levels = [] {
     std::vector<std::vector<std::vector<int>>> all;
-    for (int level = 0; level <= 4; ++level)
+    for (int level = 0; level <= 3; ++level)
       all.push_back(view_sphere_rotations(view_sphere_directions(level)));
     return all;
   }();
-  view_sphere_directions(subdivisions);  // throws for a level outside [0, 4]
+  view_sphere_directions(subdivisions);  // throws for a level outside [0, 3]
   return levels[size_t(subdivisions)];
 }
 

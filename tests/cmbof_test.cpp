@@ -40,7 +40,7 @@ TEST(ViewSphere, SubdividedOctahedronAndItsTwentyFourRotations) {
     }
     EXPECT_EQ(distinct.size(), 24u);
   }
-  EXPECT_THROW(view_sphere_directions(5), UsageError);
+  EXPECT_THROW(view_sphere_directions(4), UsageError);
   Eigen::MatrixX3d tilted = view_sphere_directions(0);
   tilted.row(0) = Eigen::RowVector3d(1, 1, 0).normalized();
   EXPECT_THROW(view_sphere_rotations(tilted), UsageError);
