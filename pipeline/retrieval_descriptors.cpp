@@ -94,7 +94,9 @@ std::string cmbof_options_key(const CmbofOptions& o) {
 std::string retrieval_options_key(const RetrievalOptions& options) {
   return "points=" + std::to_string(options.sample_points) +
          " icp=" + std::to_string(options.icp_iterations) +
-         " cmbof=" + cmbof_options_key(options.cmbof);
+         " views=" + std::to_string(options.cmbof.view_subdivisions) +
+         " image=" + std::to_string(options.cmbof.image_size) +
+         " per_view=" + std::to_string(options.cmbof.features_per_view);
 }
 
 std::string similarity_key(RetrievalFramework framework, const RetrievalOptions& options,

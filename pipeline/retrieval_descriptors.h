@@ -43,7 +43,8 @@ double framework_dissimilarity(RetrievalFramework framework, const RetrievalDesc
                                const RetrievalDescriptor& b, const RetrievalOptions& options);
 
 /// The options a descriptor depends on, as text for file headers
-/// ("points=1000 icp=20 cmbof=2,256,0,1500,20000,10").
+/// ("points=1000 icp=20 views=2 image=256 per_view=0"; not the vocabulary's,
+/// which the cached SIFT features do not depend on).
 std::string retrieval_options_key(const RetrievalOptions& options);
 
 /// CM-BOF's options as text ("2,256,0,1500,20000,10", the CmbofOptions fields).
