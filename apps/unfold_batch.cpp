@@ -24,6 +24,9 @@ DEFINE_string(metrics, "",
 DEFINE_int32(retrieval_points, 1000, "points sampled per shape for retrieval");
 DEFINE_int32(cmbof_words, 1500, "CMBOF retrieval: visual vocabulary size (k-means centres)");
 DEFINE_int32(cmbof_image_size, 256, "CMBOF retrieval: depth image width and height, pixels");
+DEFINE_int32(cmbof_view_subdivisions, 2,
+             "CMBOF retrieval: octahedron subdivisions of the view sphere, 0-3 (6, 18, 66, 258 "
+             "views)");
 DEFINE_bool(progress, true, "progress bar on stderr (only when it is a terminal)");
 
 int main(int argc, char** argv) {
@@ -36,7 +39,9 @@ int main(int argc, char** argv) {
   help.groups = {
       {"Input and output", {"input_dir", "output_dir", "skip_existing"}},
       {"Method and config", {"configs", "target_vertices"}},
-      {"Metrics and pictures", {"metrics", "retrieval_points", "cmbof_words", "cmbof_image_size"}},
+      {"Metrics and pictures",
+       {"metrics", "retrieval_points", "cmbof_words", "cmbof_image_size",
+        "cmbof_view_subdivisions"}},
       {"Batch", {"jobs", "shard", "progress"}},
   };
   return unfold::app::run_main("unfold_batch", help, argc, argv, [] {
@@ -62,6 +67,9 @@ int main(int argc, char** argv) {
     if (FLAGS_cmbof_image_size < 8) throw unfold::UsageError("--cmbof_image_size must be >= 8");
     options.retrieval.cmbof.words = FLAGS_cmbof_words;
     options.retrieval.cmbof.image_size = FLAGS_cmbof_image_size;
+    if (FLAGS_cmbof_view_subdivisions < 0 || FLAGS_cmbof_view_subdivisions > 3)
+      throw unfold::UsageError("--cmbof_view_subdivisions must be in [0, 3]");
+    options.retrieval.cmbof.view_subdivisions = FLAGS_cmbof_view_subdivisions;
     options.progress = FLAGS_progress;
     int failed = 0;
     for (const auto& row : unfold::run_batch(options)) failed += row.status != "ok";

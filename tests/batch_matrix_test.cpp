@@ -27,8 +27,9 @@ namespace unfold {
 namespace {
 
 // CMBOF's retrieval at a size that keeps these runs quick (its defaults: 1500
-// words, 256-pixel views).
-const std::string kCheapCmbof = "--cmbof_words 32 --cmbof_image_size 128";
+// words, 66 views of 256 pixels).
+const std::string kCheapCmbof =
+    "--cmbof_words 32 --cmbof_image_size 128 --cmbof_view_subdivisions 0";
 
 namespace fs = std::filesystem;
 
@@ -130,7 +131,7 @@ TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
     const std::string bin = std::string(UNFOLD_BIN_DIR) + "/unfold_batch";
     execl(bin.c_str(), bin.c_str(), "--input_dir", in.c_str(), "--output_dir", out.c_str(),
           "--configs", list.c_str(), "--retrieval_points", "100", "--cmbof_words", "32",
-          "--cmbof_image_size", "128", "--jobs", "1", nullptr);
+          "--cmbof_image_size", "128", "--cmbof_view_subdivisions", "0", "--jobs", "1", nullptr);
     _exit(127);
   }
   setpgid(pid, pid);
@@ -156,7 +157,8 @@ TEST(BatchMatrix, ThreadsIsCheckedAndASmallShapeDoesNotDependOnIt) {
   const std::string in = dir.file("in");
   fs::create_directories(in);
   fs::copy_file(test::matrix_input(test::kDemo), in + "/demo.ply");
-  const std::string args = "--input_dir " + in + " --configs " + configs({0}) + " --output_dir ";
+  const std::string args =
+      "--input_dir " + in + " --configs " + configs({0}) + " " + kCheapCmbof + " --output_dir ";
   const test::AppRun bad = test::run_app("unfold_batch", args + dir.file("bad") + " --threads -1");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--threads must be >= 0"), std::string::npos) << bad.err;

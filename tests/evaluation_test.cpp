@@ -94,11 +94,12 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   write_surface_mesh(in + "/body0.off", make_articulated_shape(ShapePose::preset(0), 24));
   write_surface_mesh(in + "/body1.off", make_articulated_shape(ShapePose::preset(1), 24));
   test::write_bytes(in + "/broken2.off", "OFF\n3 1 0\n0 0 0\n");  // truncated
-  const std::string command =
-      std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in + " --output_dir " + out +
-      " --configs " + UNFOLD_SOURCE_DIR + "/configs/default.yaml," + UNFOLD_SOURCE_DIR +
-      "/configs/lsmds.yaml --jobs 2 --cmbof_words 32 --cmbof_image_size 128 > " +
-      dir.file("stdout") + " 2>&1";
+  const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
+                              " --output_dir " + out + " --configs " + UNFOLD_SOURCE_DIR +
+                              "/configs/default.yaml," + UNFOLD_SOURCE_DIR +
+                              "/configs/lsmds.yaml --jobs 2 --cmbof_words 32 --cmbof_image_size "
+                              "128 --cmbof_view_subdivisions 0 > " +
+                              dir.file("stdout") + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);
   const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
   ASSERT_EQ(rows.size(), 6u);
@@ -161,7 +162,8 @@ TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
     const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
                                 " --output_dir " + dir.file(out) + " --configs " +
                                 UNFOLD_SOURCE_DIR + "/configs/default.yaml --jobs 1 " +
-                                "--retrieval_points 150 --cmbof_words 32 --cmbof_image_size 128 " +
+                                "--retrieval_points 150 --cmbof_words 32 --cmbof_image_size 128 "
+                                "--cmbof_view_subdivisions 0 " +
                                 extra + " >> " + dir.file("log") + " 2>&1";
     return std::system(command.c_str());
   };
