@@ -22,6 +22,11 @@ DEFINE_string(metrics, "",
               "if set: overrides metrics.compute of every config, e.g. E_rig,E_str skips E_geo "
               "(its column is then empty)");
 DEFINE_int32(retrieval_points, 1000, "points sampled per shape for retrieval");
+DEFINE_int32(cmbof_words, 1500, "CMBOF retrieval: visual vocabulary size (k-means centres)");
+DEFINE_int32(cmbof_image_size, 256, "CMBOF retrieval: depth image width and height, pixels");
+DEFINE_int32(cmbof_view_subdivisions, 2,
+             "CMBOF retrieval: octahedron subdivisions of the view sphere, 0-3 (6, 18, 66, 258 "
+             "views)");
 DEFINE_bool(progress, true,
             "on a terminal: a progress line (shapes done, elapsed time) rewritten in place on "
             "stderr; when stderr is a file or a pipe, the per-shape lines alone");
@@ -36,7 +41,9 @@ int main(int argc, char** argv) {
   help.groups = {
       {"Input and output", {"input_dir", "output_dir", "skip_existing"}},
       {"Method and config", {"configs", "target_vertices"}},
-      {"Metrics and pictures", {"metrics", "retrieval_points"}},
+      {"Metrics and pictures",
+       {"metrics", "retrieval_points", "cmbof_words", "cmbof_image_size",
+        "cmbof_view_subdivisions"}},
       {"Batch", {"jobs", "shard", "progress"}},
   };
   return unfold::app::run_main("unfold_batch", help, argc, argv, [] {
@@ -58,6 +65,13 @@ int main(int argc, char** argv) {
     if (!FLAGS_metrics.empty()) options.overrides["metrics.compute"] = FLAGS_metrics;
     if (FLAGS_retrieval_points < 4) throw unfold::UsageError("--retrieval_points must be >= 4");
     options.retrieval.sample_points = FLAGS_retrieval_points;
+    if (FLAGS_cmbof_words < 1) throw unfold::UsageError("--cmbof_words must be >= 1");
+    if (FLAGS_cmbof_image_size < 8) throw unfold::UsageError("--cmbof_image_size must be >= 8");
+    options.retrieval.cmbof.words = FLAGS_cmbof_words;
+    options.retrieval.cmbof.image_size = FLAGS_cmbof_image_size;
+    if (FLAGS_cmbof_view_subdivisions < 0 || FLAGS_cmbof_view_subdivisions > 3)
+      throw unfold::UsageError("--cmbof_view_subdivisions must be in [0, 3]");
+    options.retrieval.cmbof.view_subdivisions = FLAGS_cmbof_view_subdivisions;
     options.progress = FLAGS_progress && unfold::app::stderr_is_terminal();
     int failed = 0;
     for (const auto& row : unfold::run_batch(options)) failed += row.status != "ok";

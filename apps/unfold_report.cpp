@@ -11,8 +11,9 @@
 DEFINE_string(runs, "", "comma-separated unfold_batch output directories (required)");
 DEFINE_string(labels, "", "comma-separated labels, one per run, appended to method names");
 DEFINE_string(markdown, "", "write the report here; empty: print it");
-DEFINE_string(plots_dir, "",
-              "write cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png, pr_icp.png, pr_ort.png here");
+DEFINE_string(
+    plots_dir, "",
+    "write cdf_E_rig.png, cdf_E_str.png, cdf_E_geo.png, pr_icp.png, pr_ort.png, pr_cmbof.png here");
 
 namespace {
 std::vector<std::string> split(const std::string& text) {

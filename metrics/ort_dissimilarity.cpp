@@ -1,6 +1,7 @@
 #include "metrics/ort_dissimilarity.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -11,18 +12,18 @@
 namespace unfold {
 namespace {
 
-Eigen::MatrixX3d every_kth_row(const Eigen::MatrixX3d& V, Eigen::Index count) {
-  const Eigen::Index stride = (V.rows() + count - 1) / count;
-  Eigen::MatrixX3d S((V.rows() + stride - 1) / stride, 3);
-  for (Eigen::Index i = 0; i < S.rows(); ++i) S.row(i) = V.row(i * stride);
-  return S;
-}
-
 double bounding_box_volume(const Eigen::MatrixX3d& V) {
   return (V.colwise().maxCoeff() - V.colwise().minCoeff()).prod();
 }
 
 }  // namespace
+
+Eigen::MatrixX3d evenly_spaced_rows(const Eigen::MatrixX3d& V, Eigen::Index count) {
+  const Eigen::Index stride = std::max<Eigen::Index>(1, (V.rows() + count - 1) / count);
+  Eigen::MatrixX3d S((V.rows() + stride - 1) / stride, 3);
+  for (Eigen::Index i = 0; i < S.rows(); ++i) S.row(i) = V.row(i * stride);
+  return S;
+}
 
 std::vector<Eigen::Matrix3d> cube_rotations() {
   std::vector<Eigen::Matrix3d> rotations;
@@ -52,10 +53,8 @@ Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
                                                                                               : pca;
 }
 
-Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-                            int sample_points) {
-  if (V.rows() < 4 || sample_points < 4)
-    throw UsageError("ORT needs at least 4 vertices and sample points");
+Eigen::MatrixX3d ort_normalise(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+  if (V.rows() < 4) throw UsageError("ORT needs at least 4 vertices");
   double area = 0;
   Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
@@ -65,7 +64,14 @@ Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F
   }
   if (area <= 0) throw UsageError("ORT: the mesh has zero area");
   const Eigen::MatrixX3d normalised = (V.rowwise() - centroid / area) / std::sqrt(area);
-  return every_kth_row(normalised, sample_points) * ort_orientation(normalised, F).transpose();
+  return normalised * ort_orientation(normalised, F).transpose();
+}
+
+Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                            int sample_points) {
+  if (V.rows() < 4 || sample_points < 4)
+    throw UsageError("ORT needs at least 4 vertices and sample points");
+  return evenly_spaced_rows(ort_normalise(V, F), sample_points);
 }
 
 double mean_squared_point_error(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B) {
@@ -79,7 +85,7 @@ double mean_squared_point_error(const Eigen::MatrixX3d& A, const Eigen::MatrixX3
 double ort_dissimilarity(const Eigen::MatrixX3d& A, const Eigen::MatrixX3d& B, int icp_iterations) {
   if (A.rows() == 0 || B.rows() == 0) throw UsageError("ort_dissimilarity: empty set");
   static const std::vector<Eigen::Matrix3d> rotations = cube_rotations();
-  const Eigen::MatrixX3d a = every_kth_row(A, 200), b = every_kth_row(B, 200);
+  const Eigen::MatrixX3d a = evenly_spaced_rows(A, 200), b = evenly_spaced_rows(B, 200);
   Eigen::Matrix3d best_rotation;
   double best = std::numeric_limits<double>::infinity();
   for (const Eigen::Matrix3d& R : rotations) {

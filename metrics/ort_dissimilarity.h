@@ -21,9 +21,17 @@ namespace unfold {
 /// @pre V centred at the area centroid
 Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
 
-/// The ORT sample: the mesh centred at its area centroid, scaled to unit
-/// surface area and oriented by ort_orientation, then every
-/// ceil(n / sample_points)-th vertex.
+/// The ORT normalisation (shared with CM-BOF, pipeline/cmbof_features.h): the
+/// mesh's vertices centred at its area centroid, scaled to unit surface area
+/// and oriented by ort_orientation.
+/// @throws UsageError for fewer than 4 vertices or zero area
+Eigen::MatrixX3d ort_normalise(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
+/// Every ceil(n / count)-th row of V (count >= 1): an even subsample that keeps
+/// the order.
+Eigen::MatrixX3d evenly_spaced_rows(const Eigen::MatrixX3d& V, Eigen::Index count);
+
+/// The ORT sample: every ceil(n / sample_points)-th vertex of ort_normalise.
 /// @throws UsageError for fewer than 4 vertices, sample_points < 4 or zero area
 Eigen::MatrixX3d ort_sample(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
                             int sample_points);

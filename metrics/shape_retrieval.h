@@ -11,9 +11,21 @@
 
 namespace unfold {
 
+/// CM-BOF's parameters (pipeline/cmbof_features.h, docs/evaluation.md says
+/// where each comes from).
+struct CmbofOptions {
+  int view_subdivisions = 2;      ///< octahedron subdivisions: 66 views
+  int image_size = 256;           ///< depth image width = height, pixels
+  int features_per_view = 0;      ///< SIFT features kept per view, strongest first; 0: all
+  int words = 1500;               ///< visual vocabulary size
+  int training_features = 20000;  ///< features sampled for k-means (evenly over the set)
+  int kmeans_iterations = 10;     ///< Lloyd iterations after k-means++ seeding
+};
+
 struct RetrievalOptions {
   int sample_points = 1000;  ///< vertices kept per shape (every ceil(n / this)-th)
   int icp_iterations = 20;   ///< ICP iterations after the best sign flip
+  CmbofOptions cmbof = {};
 };
 
 /// The normalised sample of a shape: every ceil(n / sample_points)-th vertex,

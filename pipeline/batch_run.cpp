@@ -29,6 +29,7 @@
 #include "mesh/write_surface_mesh.h"
 #include "metrics/pose_invariance.h"
 #include "metrics/retrieval_measures.h"
+#include "pipeline/cmbof_vocabulary.h"
 #include "pipeline/metrics_json.h"
 #include "pipeline/pose_invariance_tables.h"
 #include "pipeline/retrieval_descriptors.h"
@@ -117,6 +118,9 @@ struct Layout {
   }
   std::string descriptor(const std::string& label, const std::string& shape) const {
     return dir + "/descriptors/" + label + "/" + shape + ".txt";
+  }
+  std::string vocabulary(const std::string& label) const {
+    return dir + "/descriptors/" + label + ".cmbof_vocabulary.txt";
   }
   std::string blocks() const { return dir + "/similarity_blocks"; }
   std::string block_prefix(const std::string& label, RetrievalFramework f) const {
@@ -297,6 +301,34 @@ RetrievalSet retrieval_set(const std::vector<std::string>& meshes,
   return set;
 }
 
+// CM-BOF's vocabulary of one label's set (pipeline/cmbof_vocabulary.h): read
+// from the output directory if learned there from these shapes with these
+// options, else learned and stored, so that every shard of a split run uses
+// the same; fills the set's word histograms.
+// @return the vocabulary's fingerprint; empty (no CMBOF for the label) when no
+//         view of any shape has a feature
+std::string prepare_cmbof(const Layout& out, const std::string& label, RetrievalSet* set,
+                          const RetrievalOptions& options) {
+  std::string key = "cmbof=" + cmbof_options_key(options.cmbof) + " shapes=";
+  for (const auto& name : set->names) key += name + ",";
+  std::optional<Eigen::MatrixXf> vocabulary = read_vocabulary(out.vocabulary(label), key);
+  if (!vocabulary) {
+    std::vector<const CmbofFeatures*> features;
+    for (const auto& d : set->descriptors) features.push_back(&d.cmbof);
+    try {
+      vocabulary = cmbof_vocabulary(features, options.cmbof);
+    } catch (const UsageError& e) {
+      LOG(WARNING) << label << ", cmbof: " << e.what();
+      return "";
+    }
+    write_vocabulary(out.vocabulary(label), *vocabulary, key);
+  }
+#pragma omp parallel for schedule(dynamic)
+  for (size_t i = 0; i < set->descriptors.size(); ++i)
+    set->descriptors[i].cmbof_histograms = cmbof_histograms(set->descriptors[i].cmbof, *vocabulary);
+  return vocabulary_fingerprint(*vocabulary);
+}
+
 // This shard's block of every label's and framework's similarity matrix.
 void write_similarity_blocks(const Layout& out, const std::vector<std::string>& meshes,
                              const std::vector<std::string>& methods, int index, int count,
@@ -306,12 +338,15 @@ void write_similarity_blocks(const Layout& out, const std::vector<std::string>& 
   std::error_code ec;
   fs::create_directories(out.blocks(), ec);
   for (size_t l = 0; l < labels.size(); ++l) {
-    const RetrievalSet set = retrieval_set(meshes, descriptors[l]);
-    for (const RetrievalFramework f : kRetrievalFrameworks)
+    RetrievalSet set = retrieval_set(meshes, descriptors[l]);
+    const std::string vocabulary = prepare_cmbof(out, labels[l], &set, options);
+    for (const RetrievalFramework f : kRetrievalFrameworks) {
+      if (f == RetrievalFramework::cmbof && vocabulary.empty()) continue;
       write_similarity_block(out.blocks() + "/" + out.block_prefix(labels[l], f) + "." +
                                  std::to_string(index) + "-of-" + std::to_string(count) + ".csv",
                              similarity_block(set.descriptors, f, index, count, options), set.names,
-                             index, count, options);
+                             index, count, similarity_key(f, options, vocabulary));
+    }
   }
 }
 }  // namespace
@@ -547,13 +582,16 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
     retrieval << ",precision_" << std::fixed << std::setprecision(2) << double(l) / kRecallLevels;
   retrieval << '\n' << std::defaultfloat << std::setprecision(10);
   for (size_t m = 0; m < labels.size(); ++m) {
-    const RetrievalSet set = retrieval_set(meshes, descriptors[m]);
+    RetrievalSet set = retrieval_set(meshes, descriptors[m]);
     std::vector<std::string> set_classes;
     for (const auto& name : set.names) set_classes.push_back(shape_class(name));
     if (set.names.size() < 2) continue;
+    const std::string vocabulary = prepare_cmbof(out, labels[m], &set, options);
     for (const RetrievalFramework f : kRetrievalFrameworks) {
-      const Eigen::MatrixXd D = assemble_similarity(set.descriptors, set.names, f, out.blocks(),
-                                                    out.block_prefix(labels[m], f), options);
+      if (f == RetrievalFramework::cmbof && vocabulary.empty()) continue;
+      const Eigen::MatrixXd D = assemble_similarity(
+          set.descriptors, set.names, f, out.blocks(), out.block_prefix(labels[m], f),
+          similarity_key(f, options, vocabulary), options);
       try {
         const RetrievalMeasures r = retrieval_measures(D, set_classes);
         retrieval << labels[m] << ',' << framework_name(f) << ',' << r.queries << ',' << r.nn << ','
@@ -563,7 +601,8 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
       } catch (const UsageError& e) {  // no class with two shapes: a matrix, no measures
         LOG(WARNING) << labels[m] << ", " << framework_name(f) << ": " << e.what();
       }
-      const std::string suffix = f == RetrievalFramework::icp ? "" : "_ort";
+      const std::string suffix =
+          f == RetrievalFramework::icp ? "" : std::string("_") + framework_name(f);
       write_file_atomically(
           output_dir + "/similarity_" + labels[m] + suffix + ".csv", [&](std::ostream& s) {
             s << "shape";

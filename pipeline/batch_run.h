@@ -11,9 +11,10 @@
 //   <method>/<shape>.row           this shape's results.csv row
 //   logs/<shape>.log               the child's log
 //   descriptors/<method>/<shape>.txt  retrieval descriptors (raw = the inputs), cached
+//   descriptors/<method>.cmbof_vocabulary.txt  the method's CMBOF visual vocabulary
 //   similarity_blocks/<method>_<framework>.<i>-of-<N>.csv  a shard's rows of a matrix
-//   results.csv, retrieval.csv, pose_invariance.csv,
-//   similarity_<method>.csv (ICP), similarity_<method>_ort.csv (ORT)
+//   results.csv, retrieval.csv, pose_invariance.csv, similarity_<method>.csv (ICP),
+//   similarity_<method>_ort.csv (ORT), similarity_<method>_cmbof.csv (CMBOF)
 #pragma once
 
 #include <map>
@@ -74,12 +75,13 @@ std::vector<BatchRow> read_results_csv(const std::string& path);
 
 /// Retrieval (retrieval.csv: method,framework,queries,nn,first_tier,
 /// second_tier,e_measure,dcg,precision_0.05..precision_1.00 as
-/// metrics/retrieval_measures.h; the matrices similarity_<method>.csv and
-/// similarity_<method>_ort.csv, assembled from the block files of sharded runs
-/// and computed where none is found) and pose invariance (pose_invariance.csv:
-/// class,method,pose_distance) for the raw input poses and each method's
-/// canonical forms found in output_dir; descriptors are read from their cache
-/// or computed and cached.
+/// metrics/retrieval_measures.h; the matrices similarity_<method>.csv,
+/// similarity_<method>_ort.csv and similarity_<method>_cmbof.csv, assembled
+/// from the block files of sharded runs and computed where none is found) and
+/// pose invariance (pose_invariance.csv: class,method,pose_distance) for the
+/// raw input poses and each method's canonical forms found in output_dir;
+/// descriptors are read from their cache or computed and cached, and so is
+/// each method's CMBOF vocabulary (descriptors/<method>.cmbof_vocabulary.txt).
 /// @param meshes input mesh paths; methods the config stems
 /// Unreadable input meshes are left out. @throws OutputError
 void write_dataset_evaluation(const std::string& output_dir, const std::vector<std::string>& meshes,

@@ -52,10 +52,10 @@ Eigen::MatrixXd similarity_block(const std::vector<RetrievalDescriptor>& descrip
 
 void write_similarity_block(const std::string& path, const Eigen::MatrixXd& block,
                             const std::vector<std::string>& names, int index, int count,
-                            const RetrievalOptions& options) {
+                            const std::string& key) {
   write_file_atomically(path, [&](std::ostream& s) {
     s << kMagic << '\n'
-      << retrieval_options_key(options) << '\n'
+      << key << '\n'
       << shape_header(names) << '\n'
       << std::setprecision(std::numeric_limits<double>::max_digits10);
     for (Eigen::Index i = index; i < block.rows(); i += count) {
@@ -70,12 +70,11 @@ void write_similarity_block(const std::string& path, const Eigen::MatrixXd& bloc
 }
 
 int read_similarity_block(const std::string& path, const std::vector<std::string>& names,
-                          const RetrievalOptions& options, Eigen::MatrixXd* matrix) {
+                          const std::string& key, Eigen::MatrixXd* matrix) {
   std::ifstream in(path);
-  std::string magic, key, header;
-  if (!std::getline(in, magic) || magic != kMagic || !std::getline(in, key) ||
-      key != retrieval_options_key(options) || !std::getline(in, header) ||
-      header != shape_header(names))
+  std::string magic, stored_key, header;
+  if (!std::getline(in, magic) || magic != kMagic || !std::getline(in, stored_key) ||
+      stored_key != key || !std::getline(in, header) || header != shape_header(names))
     return 0;
   std::map<std::string, Eigen::Index> index;
   for (size_t i = 0; i < names.size(); ++i) index[names[i]] = Eigen::Index(i);
@@ -105,13 +104,14 @@ int read_similarity_block(const std::string& path, const std::vector<std::string
 Eigen::MatrixXd assemble_similarity(const std::vector<RetrievalDescriptor>& descriptors,
                                     const std::vector<std::string>& names,
                                     RetrievalFramework framework, const std::string& block_dir,
-                                    const std::string& prefix, const RetrievalOptions& options) {
+                                    const std::string& prefix, const std::string& key,
+                                    const RetrievalOptions& options) {
   const int n = int(descriptors.size());
   Eigen::MatrixXd D = Eigen::MatrixXd::Constant(n, n, std::numeric_limits<double>::quiet_NaN());
   std::error_code ec;
   for (fs::directory_iterator it(block_dir, ec), end; !ec && it != end; it.increment(ec))
     if (it->path().filename().string().rfind(prefix + ".", 0) == 0)
-      read_similarity_block(it->path().string(), names, options, &D);
+      read_similarity_block(it->path().string(), names, key, &D);
   std::vector<int> missing;
   for (int i = 0; i + 1 < n; ++i)
     if (D.row(i).tail(n - i - 1).hasNaN()) missing.push_back(i);

@@ -26,6 +26,11 @@
 namespace unfold {
 namespace {
 
+// CMBOF's retrieval at a size that keeps these runs quick (its defaults: 1500
+// words, 66 views of 256 pixels).
+const std::string kCheapCmbof =
+    "--cmbof_words 32 --cmbof_image_size 128 --cmbof_view_subdivisions 0";
+
 namespace fs = std::filesystem;
 
 // Every input class, plus a truncated file, as a batch input directory.
@@ -59,9 +64,10 @@ TEST(BatchMatrix, EveryShapeAndMethodIsRecordedAndFailuresDoNotStopTheRun) {
   const std::string in = input_dir(dir), out = dir.file("out");
   for (const char* jobs : {"2", "1 --target_vertices 50"}) {
     fs::remove_all(out);
-    const test::AppRun r = test::run_app(
-        "unfold_batch", "--input_dir " + in + " --output_dir " + out + " --configs " +
-                            configs({0, 1, 2, 3}) + " --retrieval_points 100 --jobs " + jobs);
+    const test::AppRun r =
+        test::run_app("unfold_batch", "--input_dir " + in + " --output_dir " + out + " --configs " +
+                                          configs({0, 1, 2, 3}) + " --retrieval_points 100 " +
+                                          kCheapCmbof + " --jobs " + jobs);
     SCOPED_TRACE(std::string("--jobs ") + jobs);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
@@ -106,7 +112,8 @@ std::string tables(const std::string& out) {
 TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
   const test::TempDir dir;
   const std::string in = input_dir(dir), list = configs({0, 2});
-  const std::string args = " --configs " + list + " --retrieval_points 100 --jobs 1";
+  const std::string args =
+      " --configs " + list + " --retrieval_points 100 " + kCheapCmbof + " --jobs 1";
   ASSERT_EQ(test::run_app("unfold_batch",
                           "--input_dir " + in + " --output_dir " + dir.file("straight") + args)
                 .exit_code,
@@ -123,7 +130,8 @@ TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
     dup2(null, STDERR_FILENO);
     const std::string bin = std::string(UNFOLD_BIN_DIR) + "/unfold_batch";
     execl(bin.c_str(), bin.c_str(), "--input_dir", in.c_str(), "--output_dir", out.c_str(),
-          "--configs", list.c_str(), "--retrieval_points", "100", "--jobs", "1", nullptr);
+          "--configs", list.c_str(), "--retrieval_points", "100", "--cmbof_words", "32",
+          "--cmbof_image_size", "128", "--cmbof_view_subdivisions", "0", "--jobs", "1", nullptr);
     _exit(127);
   }
   setpgid(pid, pid);
@@ -149,7 +157,8 @@ TEST(BatchMatrix, ThreadsIsCheckedAndASmallShapeDoesNotDependOnIt) {
   const std::string in = dir.file("in");
   fs::create_directories(in);
   fs::copy_file(test::matrix_input(test::kDemo), in + "/demo.ply");
-  const std::string args = "--input_dir " + in + " --configs " + configs({0}) + " --output_dir ";
+  const std::string args =
+      "--input_dir " + in + " --configs " + configs({0}) + " " + kCheapCmbof + " --output_dir ";
   const test::AppRun bad = test::run_app("unfold_batch", args + dir.file("bad") + " --threads -1");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--threads must be >= 0"), std::string::npos) << bad.err;

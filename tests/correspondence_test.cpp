@@ -238,7 +238,8 @@ TEST(Batch, RunsAClassMeshedDifferentlyOnItsVtsFiles) {
   write_surface_mesh(in + "/ball1.off", test::uv_sphere(7, 9));
   const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
                               " --output_dir " + out + " --configs " + UNFOLD_SOURCE_DIR +
-                              "/configs/paper.yaml --target_vertices 300 --jobs 2 > " +
+                              "/configs/paper.yaml --target_vertices 300 --jobs 2 --cmbof_words 32 "
+                              "--cmbof_image_size 128 --cmbof_view_subdivisions 0 > " +
                               dir.file("log") + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir.file("log"));
   const std::string pairs = read_text(out + "/pose_pairs.csv"),

@@ -97,7 +97,9 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
                               " --output_dir " + out + " --configs " + UNFOLD_SOURCE_DIR +
                               "/configs/default.yaml," + UNFOLD_SOURCE_DIR +
-                              "/configs/lsmds.yaml --jobs 2 > " + dir.file("stdout") + " 2>&1";
+                              "/configs/lsmds.yaml --jobs 2 --cmbof_words 32 --cmbof_image_size "
+                              "128 --cmbof_view_subdivisions 0 > " +
+                              dir.file("stdout") + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);
   const std::vector<BatchRow> rows = read_results_csv(out + "/results.csv");
   ASSERT_EQ(rows.size(), 6u);
@@ -126,10 +128,12 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
       << r.str();
   EXPECT_NE(r.str().find("\nraw,icp,2,"), std::string::npos) << r.str();
   EXPECT_NE(r.str().find("\nlsmds,ort,2,"), std::string::npos) << r.str();
+  EXPECT_NE(r.str().find("\nlsmds,cmbof,2,"), std::string::npos) << r.str();
   EXPECT_NE(p.str().find("body,raw,"), std::string::npos) << p.str();
   EXPECT_NE(p.str().find("body,default,"), std::string::npos) << p.str();
   EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default.csv"));
   EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default_ort.csv"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/similarity_default_cmbof.csv"));
   EXPECT_TRUE(std::filesystem::exists(out + "/descriptors/raw/body0.txt"));
   // One pair of poses: its row, with the ratio of canonical to raw distance.
   std::ifstream pairs_file(out + "/pose_pairs.csv");
@@ -155,10 +159,12 @@ TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
     write_surface_mesh(in + "/" + (k < 2 ? "a" : "b") + std::to_string(k % 2) + ".off",
                        make_articulated_shape(ShapePose::preset(k % 3), k < 2 ? 24 : 16));
   auto batch = [&](const std::string& out, const std::string& extra) {
-    const std::string command =
-        std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in + " --output_dir " +
-        dir.file(out) + " --configs " + UNFOLD_SOURCE_DIR + "/configs/default.yaml --jobs 1 " +
-        "--retrieval_points 150 " + extra + " >> " + dir.file("log") + " 2>&1";
+    const std::string command = std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
+                                " --output_dir " + dir.file(out) + " --configs " +
+                                UNFOLD_SOURCE_DIR + "/configs/default.yaml --jobs 1 " +
+                                "--retrieval_points 150 --cmbof_words 32 --cmbof_image_size 128 "
+                                "--cmbof_view_subdivisions 0 " +
+                                extra + " >> " + dir.file("log") + " 2>&1";
     return std::system(command.c_str());
   };
   ASSERT_EQ(batch("single", ""), 0);
@@ -166,13 +172,16 @@ TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
     for (const char* shard : {"0/2", "1/2"})
       ASSERT_EQ(batch("split", std::string("--skip_existing --shard ") + shard), 0);
   const std::string blocks = dir.file("split/similarity_blocks/");
-  for (const char* matrix : {"raw_icp", "raw_ort", "default_icp", "default_ort"})
+  for (const char* matrix :
+       {"raw_icp", "raw_ort", "raw_cmbof", "default_icp", "default_ort", "default_cmbof"})
     for (const char* block : {".0-of-2.csv", ".1-of-2.csv"})
       EXPECT_TRUE(std::filesystem::exists(blocks + matrix + block)) << matrix << block;
   EXPECT_FALSE(std::filesystem::exists(dir.file("split/retrieval.csv")));
   ASSERT_EQ(batch("split", "--skip_existing"), 0);
-  for (const char* table : {"retrieval.csv", "similarity_raw.csv", "similarity_raw_ort.csv",
-                            "similarity_default.csv", "similarity_default_ort.csv"})
+  for (const char* table :
+       {"retrieval.csv", "similarity_raw.csv", "similarity_raw_ort.csv", "similarity_raw_cmbof.csv",
+        "similarity_default.csv", "similarity_default_ort.csv", "similarity_default_cmbof.csv",
+        "descriptors/raw.cmbof_vocabulary.txt"})
     EXPECT_EQ(test::file_text(dir.file("split/") + table),
               test::file_text(dir.file("single/") + table))
         << table;
@@ -185,6 +194,18 @@ TEST(Batch, AShardSplitRunGivesTheRetrievalOfOneRun) {
   ASSERT_EQ(batch("split", "--skip_existing"), 0);
   EXPECT_NE(test::file_text(dir.file("split/similarity_raw.csv")).find("\na0,0,123,123,123\n"),
             std::string::npos);
+  // A CMBOF block made with another vocabulary is not mixed in: its rows are
+  // computed again, with the vocabulary the shards agreed on.
+  block = test::file_text(blocks + "raw_cmbof.0-of-2.csv");
+  const size_t key = block.find("vocabulary=");
+  ASSERT_NE(key, std::string::npos) << block;
+  block.replace(key, 11, "vocabulary=0");
+  const size_t cmbof_row = block.find("\na0,,");
+  block.replace(cmbof_row, block.find('\n', cmbof_row + 1) - cmbof_row, "\na0,,123,123,123");
+  test::write_bytes(blocks + "raw_cmbof.0-of-2.csv", block);
+  ASSERT_EQ(batch("split", "--skip_existing"), 0);
+  EXPECT_EQ(test::file_text(dir.file("split/similarity_raw_cmbof.csv")),
+            test::file_text(dir.file("single/similarity_raw_cmbof.csv")));
 }
 
 }  // namespace

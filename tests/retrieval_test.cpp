@@ -1,8 +1,8 @@
 // Retrieval: the benchmark measures on a hand-made matrix whose values are
 // worked out by hand; rectilinearity and the ORT normalisation invariant to a
 // rigid motion and a scale; the ORT dissimilarity's value on a hand-made pair;
-// similarity blocks that assemble to the matrix computed in one go; the
-// descriptors' exact round trip.
+// similarity blocks (every framework, CMBOF too) that assemble to the matrix
+// computed in one go; the descriptors' exact round trip.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +13,7 @@
 #include "metrics/pose_invariance.h"
 #include "metrics/rectilinearity.h"
 #include "metrics/retrieval_measures.h"
+#include "pipeline/cmbof_vocabulary.h"
 #include "pipeline/similarity_blocks.h"
 #include "shapes/articulated_shape.h"
 #include "test_files.h"
@@ -148,59 +149,76 @@ TEST(Ort, HandMadePairHasItsKnownMeanSquaredError) {
 TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
   std::vector<RetrievalDescriptor> d;
   std::vector<std::string> names;
-  const RetrievalOptions options{100, 5};
+  RetrievalOptions options{100, 5};
+  options.cmbof.view_subdivisions = 1, options.cmbof.image_size = 128, options.cmbof.words = 32;
+  std::vector<const CmbofFeatures*> features;
   for (int k = 0; k < 5; ++k) {
     const SurfaceMesh s = make_articulated_shape(ShapePose::preset(k % 3), 16);
     d.push_back(retrieval_descriptor({s.V * (1 + 0.1 * k), s.faces}, options));
     names.push_back("s" + std::to_string(k));
   }
+  for (const auto& descriptor : d) features.push_back(&descriptor.cmbof);
+  const Eigen::MatrixXf vocabulary = cmbof_vocabulary(features, options.cmbof);
+  for (auto& descriptor : d)
+    descriptor.cmbof_histograms = cmbof_histograms(descriptor.cmbof, vocabulary);
   const test::TempDir dir;
   const std::string blocks = dir.file("blocks");
   std::filesystem::create_directories(blocks);
   for (const RetrievalFramework f : kRetrievalFrameworks) {
     SCOPED_TRACE(framework_name(f));
-    const Eigen::MatrixXd one_go = assemble_similarity(d, names, f, blocks, "none", options);
+    const std::string key = similarity_key(f, options, vocabulary_fingerprint(vocabulary));
+    const Eigen::MatrixXd one_go = assemble_similarity(d, names, f, blocks, "none", key, options);
     EXPECT_EQ(one_go, one_go.transpose());
     EXPECT_EQ(one_go.diagonal(), Eigen::VectorXd::Zero(5));
     for (int i = 0; i < 3; ++i)
       write_similarity_block(
           blocks + "/m_" + std::string(framework_name(f)) + "." + std::to_string(i) + "-of-3.csv",
-          similarity_block(d, f, i, 3, options), names, i, 3, options);
+          similarity_block(d, f, i, 3, options), names, i, 3, key);
     Eigen::MatrixXd read = Eigen::MatrixXd::Constant(5, 5, NAN);
     int rows = 0;
     for (int i = 0; i < 3; ++i)
       rows += read_similarity_block(
           blocks + "/m_" + std::string(framework_name(f)) + "." + std::to_string(i) + "-of-3.csv",
-          names, options, &read);
+          names, key, &read);
     EXPECT_EQ(rows, 5);
     for (int i = 0; i < 5; ++i)
       for (int j = i + 1; j < 5; ++j) EXPECT_EQ(read(i, j), one_go(i, j)) << i << "," << j;
-    EXPECT_EQ(
-        assemble_similarity(d, names, f, blocks, "m_" + std::string(framework_name(f)), options),
-        one_go);
+    EXPECT_EQ(assemble_similarity(d, names, f, blocks, "m_" + std::string(framework_name(f)), key,
+                                  options),
+              one_go);
     // Another shape list or other options: the block is not used.
     std::vector<std::string> other = names;
     other[4] = "t";
     EXPECT_EQ(read_similarity_block(blocks + "/m_" + std::string(framework_name(f)) + ".0-of-3.csv",
-                                    other, options, &read),
+                                    other, key, &read),
               0);
     EXPECT_EQ(read_similarity_block(blocks + "/m_" + std::string(framework_name(f)) + ".0-of-3.csv",
-                                    names, RetrievalOptions{100, 6}, &read),
+                                    names, key + "x", &read),
               0);
   }
 }
 
 TEST(SimilarityBlocks, DescriptorsRoundTripExactly) {
   const SurfaceMesh s = make_articulated_shape(ShapePose::preset(2), 16);
-  const RetrievalOptions options{300, 5};
+  RetrievalOptions options{300, 5};
+  options.cmbof.view_subdivisions = 0, options.cmbof.image_size = 128;
   const RetrievalDescriptor d = retrieval_descriptor(s, options);
+  ASSERT_EQ(d.cmbof.views(), 6);
+  EXPECT_GT(d.cmbof.descriptors.rows(), 6);
   const test::TempDir dir;
   write_retrieval_descriptor(dir.file("d.txt"), d, options);
   const auto back = read_retrieval_descriptor(dir.file("d.txt"), options);
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(back->icp, d.icp);
   EXPECT_EQ(back->ort, d.ort);
+  EXPECT_EQ(back->cmbof.view_start, d.cmbof.view_start);
+  EXPECT_EQ(back->cmbof.descriptors, d.cmbof.descriptors);
   EXPECT_FALSE(read_retrieval_descriptor(dir.file("d.txt"), RetrievalOptions{301, 5}));
+  RetrievalOptions other = options;
+  other.cmbof.words = 7;  // the features do not depend on the vocabulary
+  EXPECT_TRUE(read_retrieval_descriptor(dir.file("d.txt"), other));
+  other.cmbof.view_subdivisions = 1;
+  EXPECT_FALSE(read_retrieval_descriptor(dir.file("d.txt"), other));
   EXPECT_FALSE(read_retrieval_descriptor(dir.file("missing.txt"), options));
 }
 

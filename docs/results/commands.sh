@@ -25,8 +25,8 @@ build/bin/unfold_batch --input_dir "$OUT/remeshed_dataset" --output_dir "$OUT/re
   --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml --jobs 2
 
 # The report: Table 1-style means, the retrieval measures (NN, FT, ST, E, DCG per
-# framework, icp and ort, like Table 3), cdf_*.png and the precision-recall
-# curves pr_icp.png, pr_ort.png.
+# framework, icp, ort and cmbof, like Table 3), cdf_*.png and the precision-recall
+# curves pr_icp.png, pr_ort.png, pr_cmbof.png.
 build/bin/unfold_report --runs "$OUT/2k,$OUT/full" --labels 2k,full \
   --markdown docs/results/report.md --plots_dir docs/results
 cp "$OUT"/2k/results.csv docs/results/results_2k.csv

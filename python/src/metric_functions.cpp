@@ -10,6 +10,7 @@
 #include "metrics/rigidity_error.h"
 #include "metrics/shape_retrieval.h"
 #include "metrics/stretch_error.h"
+#include "pipeline/cmbof_matrix.h"
 
 namespace py = pybind11;
 
@@ -82,6 +83,20 @@ void def_metric_functions(py::module_& m) {
       py::arg("A"), py::arg("FA"), py::arg("B"), py::arg("FB"),
       py::arg("sample_points") = RetrievalOptions().sample_points,
       py::arg("icp_iterations") = RetrievalOptions().icp_iterations, release());
+  m.def(
+      "cmbof_matrix",
+      [](const std::vector<std::pair<Vertices, Elements>>& shapes, int view_subdivisions,
+         int image_size, int words) {
+        std::vector<SurfaceMesh> meshes;
+        for (const auto& [V, F] : shapes) meshes.push_back(make_surface(V, F));
+        CmbofOptions options;
+        options.view_subdivisions = view_subdivisions, options.image_size = image_size;
+        options.words = words;
+        return cmbof_matrix(meshes, options);
+      },
+      py::arg("shapes"), py::arg("view_subdivisions") = CmbofOptions().view_subdivisions,
+      py::arg("image_size") = CmbofOptions().image_size, py::arg("words") = CmbofOptions().words,
+      release());
   m.def(
       "retrieval_measures",
       [](const Eigen::MatrixXd& D, const std::vector<std::string>& classes) {

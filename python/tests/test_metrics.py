@@ -134,3 +134,18 @@ def test_ort_distance_is_invariant_to_a_rigid_motion_and_a_scale(demo):
     assert metrics.ort_distance(V, F, moved, F, sample_points=300) == pytest.approx(0, abs=1e-9)
     other, G = unfold.demo_shape("2", resolution=40)
     assert metrics.ort_distance(V, F, other, G, sample_points=300) > 1e-4
+
+
+def test_cmbof_matrix_is_zero_on_a_moved_copy_and_separates_poses_from_a_box(demo):
+    V, F = demo
+    moved = 2.5 * V @ rotation(0.4).T - 1.0
+    box_V = np.array([[x, y, z] for x in (0, 2) for y in (0, 1) for z in (0, 0.5)], float)
+    box_F = np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                      [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]])
+    D = metrics.cmbof_matrix([(V, F), (moved, F), (box_V, box_F)], view_subdivisions=1,
+                             image_size=128, words=32)
+    assert D.shape == (3, 3)
+    assert np.allclose(D, D.T) and np.all(np.diag(D) == 0)
+    assert D[0, 1] < 0.5 * D[0, 2]
+    with pytest.raises(unfold.ConfigError, match="at least 2"):
+        metrics.cmbof_matrix([(V, F)])

@@ -3,12 +3,13 @@
 The same functions that fill Result.metrics and the batch reports:
 E_rig (Eq. 8), E_str (Eq. 9), E_geo (Eq. 10), pose distance (two canonical
 forms of one shape), retrieval distances (two shapes' canonical forms: ICP and
-ORT) and the retrieval measures of a dissimilarity matrix (NN, FT, ST, E, DCG,
+ORT; CMBOF over a set of shapes) and the retrieval measures of a dissimilarity matrix (NN, FT, ST, E, DCG,
 precision-recall), as retrieval.csv reports them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -107,6 +108,19 @@ def ort_distance(A: npt.ArrayLike, FA: npt.ArrayLike, B: npt.ArrayLike, FB: npt.
     B, FB = _arrays.surface(B, FB)
     return _core.ort_distance(A, FA, B, FB, **_set(sample_points=sample_points,
                                                     icp_iterations=icp_iterations))
+
+
+def cmbof_matrix(shapes: Sequence[tuple[npt.ArrayLike, npt.ArrayLike]],
+                 view_subdivisions: int | None = None, image_size: int | None = None,
+                 words: int | None = None) -> np.ndarray:
+    """CM-BOF dissimilarity matrix (n, n) of surfaces (V, F), as in the
+    retrieval tables (Lian et al. 2013): each normalised like ORT and seen as
+    depth images from the view sphere (66 views), SIFT features quantised over
+    a vocabulary learned by k-means on this set, views compared by histogram
+    intersection, minimised over the 24 rotations of the view sphere."""
+    surfaces = [_arrays.surface(V, F) for V, F in shapes]
+    return _core.cmbof_matrix(surfaces, **_set(view_subdivisions=view_subdivisions,
+                                               image_size=image_size, words=words))
 
 
 def retrieval_measures(D: npt.ArrayLike, classes: list[str]) -> dict[str, Any]:
