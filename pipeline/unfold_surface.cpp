@@ -194,9 +194,28 @@ void solve_surface_cascade(const Options& options, UnfoldResult* out) {
   solve_cascade(surface_graph, surface, options, out);
 }
 
-void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, UnfoldResult* out) {
+// The surface solve's results into `out`: those of `solved` when it ran
+// already (unfold_surface runs it while the input's tets are made), else solved here.
+void surface_cascade(const Options& options, const UnfoldResult* solved, UnfoldResult* out) {
+  if (!solved) return solve_surface_cascade(options, out);
+  out->cascade = solved->cascade;
+  out->lambda2 = solved->lambda2;
+  out->beta_requested = solved->beta_requested;
+  out->beta_start = solved->beta_start;
+  out->beta_raised = solved->beta_raised;
+  out->linear_solver = solved->linear_solver;
+  out->amg_levels = solved->amg_levels;
+  out->seconds_amg = solved->seconds_amg;
+  out->cg = solved->cg;
+  out->seconds_lambda2 = solved->seconds_lambda2;
+  out->seconds_cascade = solved->seconds_cascade;
+  out->warnings.insert(out->warnings.end(), solved->warnings.begin(), solved->warnings.end());
+}
+
+void solve_on_surface(const EdgeGraph& tet_graph, const Options& options,
+                      const UnfoldResult* solved, UnfoldResult* out) {
   UnfoldResult& result = *out;
-  solve_surface_cascade(options, out);
+  surface_cascade(options, solved, out);
   const int num_surface = result.tets.num_surface_vertices;
   Eigen::MatrixX3d Q = result.tets.V.rowwise() - result.tets.V.colwise().mean();
   Q.topRows(num_surface) = result.cascade.positions;
@@ -211,9 +230,9 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options, Unfold
 // of S, its interior put back into the input (solvers/tetrahedralize_unfolded.h):
 // parts that touch in the input are joined by no tet. The result's tets become
 // that mesh, and the cascade's positions S's own tet mesh.
-void solve_on_unfolded_tets(const Options& options, UnfoldResult* out) {
+void solve_on_unfolded_tets(const Options& options, const UnfoldResult* solved, UnfoldResult* out) {
   UnfoldResult& result = *out;
-  solve_surface_cascade(options, out);
+  surface_cascade(options, solved, out);
   const auto start = std::chrono::steady_clock::now();
   // auto takes the robust route for the unfolded shape, as the input's route
   // is the user's: the unfolded shape may or may not intersect itself
@@ -300,9 +319,15 @@ std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eige
   });
 }
 
-}  // namespace
+// prepare_mesh up to the input's tets: checks, simplification, contact by
+// intersecting faces. What the tets then need besides the surface.
+struct PendingTets {
+  bool open = false;
+  int known_intersections = -1;
+};
 
-PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
+PreparedMesh prepare_surface(const SurfaceMesh& input, const Options& options,
+                             PendingTets* pending) {
   validate_options(options);
   const auto start = std::chrono::steady_clock::now();
   PreparedMesh prepared;
@@ -356,20 +381,46 @@ PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
     // made after the surface solve, by unfold_prepared
     prepared.tets = surface_only(prepared.surface);
     prepared.tets_deferred = true;
-    prepared.seconds = seconds_since(start);
-    return prepared;
   }
-  prepared.tets = tetrahedralize_or_fall_back(prepared.surface, open, options, &prepared.tet_report,
-                                              &prepared.warnings, known_intersections);
-  sort_interior_vertices(&prepared.tets);
-  LOG(INFO) << "tetrahedralized (" << prepared.tet_report.route << "): " << prepared.tets.V.rows()
-            << " vertices, " << prepared.tets.T.rows() << " tets in " << prepared.tet_report.seconds
-            << " s";
+  *pending = {open, known_intersections};
   prepared.seconds = seconds_since(start);
   return prepared;
 }
 
+// prepare_mesh's rest: the input's tets.
+void make_input_tets(const Options& options, const PendingTets& pending, PreparedMesh* prepared) {
+  const auto start = std::chrono::steady_clock::now();
+  prepared->tets =
+      tetrahedralize_or_fall_back(prepared->surface, pending.open, options, &prepared->tet_report,
+                                  &prepared->warnings, pending.known_intersections);
+  sort_interior_vertices(&prepared->tets);
+  LOG(INFO) << "tetrahedralized (" << prepared->tet_report.route << "): " << prepared->tets.V.rows()
+            << " vertices, " << prepared->tets.T.rows() << " tets in "
+            << prepared->tet_report.seconds << " s";
+  prepared->seconds += seconds_since(start);
+}
+
+UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options,
+                             const UnfoldResult* solved);
+
+}  // namespace
+
+PreparedMesh prepare_mesh(const SurfaceMesh& input, const Options& options) {
+  PendingTets pending;
+  PreparedMesh prepared = prepare_surface(input, options, &pending);
+  if (!prepared.tets_deferred) make_input_tets(options, pending, &prepared);
+  return prepared;
+}
+
 UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options) {
+  return unfold_prepared(prepared, options, nullptr);
+}
+
+namespace {
+
+// With `solved`, the surface solve ran already (shape auto, unfold_surface).
+UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options,
+                             const UnfoldResult* solved) {
   validate_options(options);
   UnfoldResult result;
   result.surface = prepared.surface;
@@ -403,7 +454,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
               << " s): tetrahedralizing " << (on_unfolded ? "the unfolded shape" : "the input");
   }
   if (on_unfolded) {
-    solve_on_unfolded_tets(options, &result);
+    solve_on_unfolded_tets(options, solved, &result);
     result.tet_report.contact_face_pairs = prepared.tet_report.contact_face_pairs;
     result.tet_report.contact_tets = contact_tets;
   }
@@ -421,7 +472,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   } else if (on_unfolded) {
     // the surface solve ran above, before its tets could be made
   } else if (options.domain == "surface" && result.tets.T.rows() > 0) {
-    solve_on_surface(graph, options, &result);
+    solve_on_surface(graph, options, solved, &result);
   } else {
     solve_cascade(graph, result.tets, options, &result);
   }
@@ -479,10 +530,32 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   return result;
 }
 
+}  // namespace
+
 UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   if (options.components == "separately" && check_surface_mesh(input, false).num_components > 1)
     return unfold_components_separately(input, options);
-  return unfold_prepared(prepare_mesh(input, options), options);
+  PendingTets pending;
+  PreparedMesh prepared = prepare_surface(input, options, &pending);
+  if (prepared.tets_deferred) return unfold_prepared(prepared, options, nullptr);
+  if (!tets_from_unfolded_on_contact(options) || pending.open) {
+    make_input_tets(options, pending, &prepared);
+    return unfold_prepared(prepared, options, nullptr);
+  }
+  // Shape auto: the surface solve needs no tets, and runs while the input's
+  // are made (TetGen works in a process of its own).
+  const auto start = std::chrono::steady_clock::now();
+  const double seconds_surface = prepared.seconds;
+  UnfoldResult solved;
+  solved.surface = prepared.surface;
+  {
+    std::future<void> tets =
+        std::async(std::launch::async, [&] { make_input_tets(options, pending, &prepared); });
+    solve_surface_cascade(options, &solved);
+    tets.get();
+  }
+  prepared.seconds = seconds_surface + seconds_since(start);  // the surface solve's included
+  return unfold_prepared(prepared, options, &solved);
 }
 
 }  // namespace unfold
