@@ -1,6 +1,7 @@
 #include "metrics/tet_deformation.h"
 
 #include <Eigen/LU>
+#include <limits>
 #include <string>
 
 #include "core/errors.h"
@@ -25,8 +26,10 @@ TetDeformation tet_deformation(const Eigen::MatrixX3d& P, const Eigen::MatrixX3d
       rest.col(k) = (P.row(T(t, k + 1)) - P.row(T(t, 0))).transpose();
       deformed.col(k) = (Q.row(T(t, k + 1)) - Q.row(T(t, 0))).transpose();
     }
-    if (rest.determinant() == 0)
-      throw InputError("tet_deformation: rest tet " + std::to_string(t) + " has zero volume");
+    if (rest.determinant() == 0) {
+      result.volume_ratio[t] = result.rigidity[t] = std::numeric_limits<double>::quiet_NaN();
+      continue;
+    }
     const Eigen::Matrix3d F = deformed * rest.inverse();
     result.volume_ratio[t] = F.determinant();
     // sum_k |F e_k - R e_k|^2 = |F - R|_F^2, whose minimiser best_rotation gives for cov F^T.

@@ -14,8 +14,9 @@ struct TetDeformation {
 /// The deformation gradient F of each tet (the linear map taking its rest edge
 /// vectors P to the deformed ones Q) summarised per tet.
 /// @param P rest positions, Q deformed positions (same size), T tets indexing them
+/// A rest tet of zero volume (the unfolded shape's tets put back into the
+/// input may flatten one) has no F: both its fields are NaN.
 /// @throws UsageError if sizes disagree or T indexes outside P
-/// @throws InputError naming the tet if a rest tet has zero volume
 TetDeformation tet_deformation(const Eigen::MatrixX3d& P, const Eigen::MatrixX3d& Q,
                                const Eigen::MatrixX4i& T);
 

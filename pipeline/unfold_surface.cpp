@@ -362,8 +362,10 @@ PreparedMesh prepare_surface(const SurfaceMesh& input, const Options& options,
   // other are contact before any tet is made, and the input's tets would only
   // be checked and dropped (every such shape of ../shared/data also has tets
   // bridging a contact, docs/method.md).
+  // A route of conforming asks for TetGen's own tets of the input, whose
+  // refusal of such a surface is then the answer.
   int known_intersections = -1;
-  if (tets_from_unfolded_on_contact(options) && !open) {
+  if (tets_from_unfolded_on_contact(options) && !open && options.tet.route != "conforming") {
     const auto contact_start = std::chrono::steady_clock::now();
     const auto pairs =
         intersecting_face_pairs(prepared.surface.V, triangulate_faces(prepared.surface));

@@ -252,8 +252,10 @@ const std::vector<BadInput>& cases() {
       {"self_intersecting_on_surface_graph",
        input("self_intersecting.off", "--tet_route conforming --fallback_surface_graph true"), 0,
        "unfolding on the surface edge graph"},
-      {"self_intersecting_robust_route", input("self_intersecting.off"), 0,
+      {"self_intersecting_robust_route", input("self_intersecting.off", "--tet_shape input"), 0,
        "using the robust route"},
+      {"self_intersecting_contact", input("self_intersecting.off"), 0,
+       "parts passing through each other"},
       {"two_components_separately", input("two_components.off", "--components separately"), 0,
        "2 connected components"},
   };
