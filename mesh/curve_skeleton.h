@@ -30,11 +30,16 @@ void validate_curve_skeleton_options(const CurveSkeletonOptions& options);
 
 /// Contracts the surface (V, F) by mean curvature flow into a curve skeleton.
 /// @param V surface vertices
-/// @param F triangles of a 2-manifold, connected surface; its holes are closed
-///         (triangles between each hole's own vertices) before the contraction
-/// @throws InputError if the surface has fewer than 8 vertices, is
-///         non-manifold, has several components or a hole that cannot be
-///         closed; NumericalError if the contraction yields no skeleton of at
+/// @param F triangles of a connected surface; its holes are closed (triangles
+///         between each hole's own vertices) before the contraction. A surface
+///         that is not a 2-manifold, or whose holes cannot be closed so, is
+///         repaired first: oriented as a polygon soup (vertices duplicated
+///         where needed), stitched, its holes closed, its largest component
+///         kept; the vertices it leaves out take the node of their nearest
+///         vertex
+/// @throws InputError if the surface has fewer than 8 vertices, several
+///         components, or is still open after the repair; NumericalError if
+///         the contraction yields no skeleton of at
 ///         least two nodes (a thin sheet may collapse to a point or a surface)
 ///         or CGAL fails
 /// @throws UsageError for bad options
