@@ -160,6 +160,14 @@ TEST(Scf, UnbendingAndDeformationCommuteWithRigidMotions) {
   EXPECT_GT(aligned_distance(pose.V, da.positions), 0.05 * size);
 }
 
+// method scf through the whole pipeline, no metrics (not needed here).
+Options scf_options() {
+  Options options;
+  options.method = "scf";
+  options.metrics = {};
+  return options;
+}
+
 // CGAL's contraction collapses edges in an order that follows memory
 // addresses, so two runs (moved or not) differ (docs/reliability.md): through
 // the whole pipeline the moved input's form is the form moved, up to that
@@ -169,15 +177,12 @@ TEST(Scf, UnbendingAndDeformationCommuteWithRigidMotions) {
 // The steps after the skeleton are exact (UnbendingAndDeformationCommute...).
 TEST(Scf, RigidMotionOfTheInputMovesTheOutputRigidly) {
   const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(0), 24);
-  Options options;
-  options.method = "scf";
-  options.metrics = {};
-  const UnfoldResult a = unfold_surface(pose, options);
+  const UnfoldResult a = unfold_surface(pose, scf_options());
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   SurfaceMesh moved = pose;
   moved.V = (pose.V * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
-  const UnfoldResult b = unfold_surface(moved, options);
+  const UnfoldResult b = unfold_surface(moved, scf_options());
   ASSERT_EQ(a.canonical.V.rows(), b.canonical.V.rows());
   // The motion itself: b's form is a's moved by R and the translation.
   const Eigen::MatrixX3d expected =
@@ -192,10 +197,7 @@ TEST(Scf, RigidMotionOfTheInputMovesTheOutputRigidly) {
 // line's width off it.
 TEST(Scf, BeforeAfterPictureDrawsBothSkeletons) {
   const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(0), 16);
-  Options options;
-  options.method = "scf";
-  options.metrics = {};
-  const UnfoldResult result = unfold_surface(pose, options);
+  const UnfoldResult result = unfold_surface(pose, scf_options());
   const RenderOptions render;
   const Image plain = render_before_after(result, render);
   const Image drawn = render_before_after(result, render, false, true);
@@ -218,7 +220,7 @@ TEST(Scf, BeforeAfterPictureDrawsBothSkeletons) {
       }
     EXPECT_GT(changed, 100) << col;
   }
-  Options lsmds = options;
+  Options lsmds = scf_options();
   lsmds.method = "lsmds";
   EXPECT_THROW(render_before_after(unfold_surface(pose, lsmds), render, false, true), UsageError);
 }
