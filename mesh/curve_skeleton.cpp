@@ -139,15 +139,15 @@ Mesh repaired_closed_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
 // Vertices the contraction did not carry (left out by the repair: another
 // component, a position given twice) take the node of the nearest vertex that
 // has one.
+// Returns how many vertices took another's node.
 // @throws NumericalError if no vertex has a node
-void assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_vertex) {
+int assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_vertex) {
   Eigen::VectorXi& node = *node_of_vertex;
   std::vector<int> carried, left;
   for (int i = 0; i < node.size(); ++i) (node(i) >= 0 ? carried : left).push_back(i);
-  if (left.empty()) return;
+  if (left.empty()) return 0;
   if (carried.empty())
     throw NumericalError("scf: the skeleton extraction left every vertex without a skeleton node");
-  LOG(INFO) << "scf: " << left.size() << " vertices take the skeleton node of the nearest vertex";
   for (const int i : left) {
     double nearest = INFINITY;
     for (const int j : carried)
@@ -156,6 +156,7 @@ void assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_ve
         node(i) = node(j);
       }
   }
+  return int(left.size());
 }
 
 }  // namespace
@@ -232,7 +233,7 @@ CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   }
   if (!s.nodes.allFinite())
     throw NumericalError("scf: the skeleton extraction gave non-finite nodes");
-  assign_nearest_nodes(V, &s.node_of_vertex);
+  s.num_left_out = assign_nearest_nodes(V, &s.node_of_vertex);
   s.edges.resize(int(boost::num_edges(graph)), 2);
   int e = 0;
   for (const auto edge : CGAL::make_range(boost::edges(graph))) {

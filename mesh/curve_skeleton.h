@@ -23,6 +23,9 @@ struct CurveSkeleton {
   Eigen::MatrixX3d nodes;          ///< one row per skeleton node
   Eigen::MatrixX2i edges;          ///< bones: node index pairs, first < second
   Eigen::VectorXi node_of_vertex;  ///< per surface vertex, the node it contracted to
+  /// surface vertices the contraction did not carry (left out by the repair),
+  /// whose node is their nearest carried vertex's
+  int num_left_out = 0;
 };
 
 /// Checks the option values. @throws UsageError naming the scf.* key

@@ -112,6 +112,40 @@ TEST(CurveSkeleton, RepairsInconsistentOrientationAndRepeatedTriangles) {
   int leaves = 0;
   for (const int d : degrees(s)) leaves += d == 1;
   EXPECT_GE(leaves, 6);  // four legs, tail, head
+  EXPECT_EQ(s.num_left_out, 0);
+}
+
+// A small octahedron hanging off the animal at one vertex: the repair splits
+// that vertex, keeps the animal and leaves the octahedron's other five
+// vertices out; they take nodes all the same, and are counted.
+TEST(CurveSkeleton, VerticesSplitOffByTheRepairTakeTheirNearestVertexsNode) {
+  const SurfaceMesh animal = make_articulated_shape(ShapePose::rest(), 24);
+  const Eigen::MatrixX3i T = triangulate_faces(animal);
+  const int n = int(animal.V.rows());
+  const Vector3d p = animal.V.row(0).transpose();
+  const Vector3d d = (p - animal.V.colwise().mean().transpose()).normalized();
+  const Vector3d u = d.unitOrthogonal(), w = d.cross(u);
+  const double r = 0.05;
+  Eigen::MatrixX3d V(n + 5, 3);
+  V.topRows(n) = animal.V;
+  // Octahedron corners: 0 (the animal's vertex 0) and the tip along d, then +-u, +-w.
+  const Vector3d c = p + r * d;
+  V.row(n) = (c + r * d).transpose();
+  V.row(n + 1) = (c + r * u).transpose();
+  V.row(n + 2) = (c + r * w).transpose();
+  V.row(n + 3) = (c - r * u).transpose();
+  V.row(n + 4) = (c - r * w).transpose();
+  const std::array<int, 4> ring = {n + 1, n + 2, n + 3, n + 4};
+  Eigen::MatrixX3i F(T.rows() + 8, 3);
+  F.topRows(T.rows()) = T;
+  for (int k = 0; k < 4; ++k) {
+    F.row(T.rows() + k) << n, ring[size_t(k)], ring[size_t((k + 1) % 4)];
+    F.row(T.rows() + 4 + k) << 0, ring[size_t((k + 1) % 4)], ring[size_t(k)];
+  }
+  const CurveSkeleton s = curve_skeleton(V, F);
+  EXPECT_EQ(s.num_left_out, 5);
+  ASSERT_EQ(s.node_of_vertex.size(), n + 5);
+  EXPECT_GE(s.node_of_vertex.minCoeff(), 0);
 }
 
 TEST(UnbendSkeleton, StraightensABentChainKeepingItsBoneLengths) {
