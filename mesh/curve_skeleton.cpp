@@ -136,11 +136,8 @@ Mesh repaired_closed_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
   return mesh;
 }
 
-// Vertices the contraction did not carry (left out by the repair: another
-// component, a position given twice) take the node of the nearest vertex that
-// has one.
-// Returns how many vertices took another's node.
-// @throws NumericalError if no vertex has a node
+}  // namespace
+
 int assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_vertex) {
   Eigen::VectorXi& node = *node_of_vertex;
   std::vector<int> carried, left;
@@ -158,8 +155,6 @@ int assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_ver
   }
   return int(left.size());
 }
-
-}  // namespace
 
 void validate_curve_skeleton_options(const CurveSkeletonOptions& o) {
   const auto positive = [](double x) { return std::isfinite(x) && x > 0; };

@@ -28,6 +28,13 @@ struct CurveSkeleton {
   int num_left_out = 0;
 };
 
+/// Gives every vertex without a node (-1 in *node_of_vertex) the node of its
+/// nearest vertex that has one.
+/// @param V vertex positions, one row per entry of *node_of_vertex
+/// @returns how many vertices took another's node
+/// @throws NumericalError if no vertex has a node
+int assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_vertex);
+
 /// Checks the option values. @throws UsageError naming the scf.* key
 void validate_curve_skeleton_options(const CurveSkeletonOptions& options);
 

@@ -12,8 +12,8 @@ namespace unfold {
 
 void unfold_scf(const EdgeGraph& graph, const ScfOptions& options, UnfoldResult* result) {
   const TetMesh& tets = result->tets;
-  ScfResult r =
-      scf(graph, tets.V, tets.num_surface_vertices, triangulate_faces(result->surface), options);
+  ScfResult r = scf(graph, tets.V, tets.num_surface_vertices, triangulate_faces(result->surface),
+                    tets.T, options);
   CascadeResult& c = result->cascade;
   c.positions = std::move(r.positions);
   c.iterations = r.unbent.iterations;
