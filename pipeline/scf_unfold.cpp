@@ -23,10 +23,10 @@ void unfold_scf(const EdgeGraph& graph, const ScfOptions& options, UnfoldResult*
   c.reached_band = true;  // no band applies
   c.history.push_back({c.iterations, 1, 0.0, c.final_energy, c.edge_ratio});
   if (const int left = r.skeleton.num_left_out) {
-    result->warnings.push_back("scf: " + std::to_string(left) + " of " +
-                               std::to_string(tets.num_surface_vertices) +
-                               " surface vertices are not on the repaired surface the skeleton "
-                               "was contracted from; they follow their nearest vertex's node");
+    result->warnings.push_back(
+        "scf: " + std::to_string(left) + " of " + std::to_string(tets.num_surface_vertices) +
+        " surface vertices were not carried by the skeleton contraction (left "
+        "out by the repair); they follow their nearest vertex's node");
     LOG(WARNING) << result->warnings.back();
   }
   result->skeleton = std::move(r.skeleton);
