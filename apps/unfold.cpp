@@ -57,6 +57,9 @@ DEFINE_string(render, "",
 DEFINE_string(render_color, "shading",
               "colouring of the canonical pose in --render: shading, or rigidity (per-vertex "
               "rigidity error)");
+DEFINE_bool(render_skeleton, false,
+            "method scf: draw the curve skeleton in --render (the input's over the input, the "
+            "straightened one over the canonical pose)");
 DEFINE_string(render_up, "z", "the shape's up axis for --render: x, y or z (TOSCA: z, FAUST: y)");
 DEFINE_string(beta_sweep, "",
               "comma-separated betas relative to n/lambda_2 (e.g. 0.5,1,2,4): unfold once per "
@@ -121,6 +124,10 @@ int run() {
                              "' is not shading or rigidity");
   if (FLAGS_render_color == "rigidity" && !unfold::computes_metric(options, "E_rig"))
     throw unfold::UsageError("--render_color rigidity needs E_rig in metrics.compute (--metrics)");
+  if (FLAGS_render_skeleton &&
+      (options.method != "scf" || FLAGS_render.empty() || !FLAGS_beta_sweep.empty()))
+    throw unfold::UsageError(
+        "--render_skeleton needs method: scf and --render, without --beta_sweep");
   std::vector<double> sweep;
   if (!FLAGS_beta_sweep.empty()) {
     sweep = unfold::parse_beta_list(FLAGS_beta_sweep);
@@ -180,8 +187,9 @@ int run() {
                       unfold::render_beta_sweep(unfold::unfold_beta_sweep(result, options, sweep),
                                                 sweep, render));
   else if (!FLAGS_render.empty())
-    unfold::write_png(FLAGS_render, unfold::render_before_after(result, render,
-                                                                FLAGS_render_color == "rigidity"));
+    unfold::write_png(FLAGS_render,
+                      unfold::render_before_after(result, render, FLAGS_render_color == "rigidity",
+                                                  FLAGS_render_skeleton));
   outputs.commit();
   progress.finish();
 
@@ -226,7 +234,7 @@ int main(int argc, char** argv) {
       {"Linear solver (method local_global)", {}},
       {"Energy terms", {}},
       {"Metrics and pictures",
-       {"render", "render_color", "render_up", "beta_sweep", "convergence_png"}},
+       {"render", "render_color", "render_skeleton", "render_up", "beta_sweep", "convergence_png"}},
   };
   help.config_key_flags = true;
   return unfold::app::run_main("unfold", help, argc, argv, run);

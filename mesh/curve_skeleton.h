@@ -23,18 +23,33 @@ struct CurveSkeleton {
   Eigen::MatrixX3d nodes;          ///< one row per skeleton node
   Eigen::MatrixX2i edges;          ///< bones: node index pairs, first < second
   Eigen::VectorXi node_of_vertex;  ///< per surface vertex, the node it contracted to
+  /// surface vertices the contraction did not carry (left out by the repair),
+  /// whose node is their nearest carried vertex's
+  int num_left_out = 0;
 };
+
+/// Gives every vertex without a node (-1 in *node_of_vertex) the node of its
+/// nearest vertex that has one.
+/// @param V vertex positions, one row per entry of *node_of_vertex
+/// @returns how many vertices took another's node
+/// @throws NumericalError if no vertex has a node
+int assign_nearest_nodes(const Eigen::MatrixX3d& V, Eigen::VectorXi* node_of_vertex);
 
 /// Checks the option values. @throws UsageError naming the scf.* key
 void validate_curve_skeleton_options(const CurveSkeletonOptions& options);
 
 /// Contracts the surface (V, F) by mean curvature flow into a curve skeleton.
 /// @param V surface vertices
-/// @param F triangles of a 2-manifold, connected surface; its holes are closed
-///         (triangles between each hole's own vertices) before the contraction
-/// @throws InputError if the surface has fewer than 8 vertices, is
-///         non-manifold, has several components or a hole that cannot be
-///         closed; NumericalError if the contraction yields no skeleton of at
+/// @param F triangles of a connected surface; its holes are closed (triangles
+///         between each hole's own vertices) before the contraction. A surface
+///         that is not a 2-manifold, or whose holes cannot be closed so, is
+///         repaired first: oriented as a polygon soup (vertices duplicated
+///         where needed), stitched, its holes closed, its largest component
+///         kept; the vertices it leaves out take the node of their nearest
+///         vertex
+/// @throws InputError if the surface has fewer than 8 vertices, several
+///         components, or is still open after the repair; NumericalError if
+///         the contraction yields no skeleton of at
 ///         least two nodes (a thin sheet may collapse to a point or a surface)
 ///         or CGAL fails
 /// @throws UsageError for bad options

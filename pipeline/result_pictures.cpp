@@ -7,13 +7,21 @@
 namespace unfold {
 
 Image render_before_after(const UnfoldResult& result, const RenderOptions& options,
-                          bool color_by_rigidity) {
+                          bool color_by_rigidity, bool draw_skeleton) {
   const Eigen::MatrixX3i F = triangulate_faces(result.surface);
   RenderPanel before{"input", result.surface.V, F, {}};
   RenderPanel after{"canonical", result.canonical.V, F, {}};
   if (color_by_rigidity) {
     after.title = "canonical: rigidity error";
     after.values = result.metrics.rigidity_per_vertex.head(result.canonical.V.rows());
+  }
+  if (draw_skeleton) {
+    const CurveSkeleton& s = result.skeleton;
+    if (s.edges.rows() == 0 || result.skeleton_canonical.rows() != s.nodes.rows())
+      throw UsageError("render_before_after: the result has no skeleton (method scf draws one)");
+    before.line_points = s.nodes;
+    after.line_points = result.skeleton_canonical;
+    before.lines = after.lines = s.edges;
   }
   return render_comparison({before, after}, options);
 }

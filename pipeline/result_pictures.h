@@ -12,9 +12,11 @@ namespace unfold {
 /// views, same cameras and scale in both halves.
 /// @param color_by_rigidity colour the canonical surface by each vertex's
 ///        rigidity error (E_rig's term; the input stays plainly shaded)
-/// @throws UsageError for bad render options
+/// @param draw_skeleton draw the curve skeleton over the input and the
+///        straightened one over the canonical surface (method scf)
+/// @throws UsageError for bad render options, or draw_skeleton without a skeleton
 Image render_before_after(const UnfoldResult& result, const RenderOptions& options,
-                          bool color_by_rigidity = false);
+                          bool color_by_rigidity = false, bool draw_skeleton = false);
 
 /// The input surface, then one column per run of a beta sweep (unfold_beta_sweep),
 /// titled with beta relative to n / lambda_2.

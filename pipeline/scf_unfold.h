@@ -10,7 +10,8 @@ namespace unfold {
 /// Runs scf() on result->tets (the surface alone when it has no tets) and
 /// fills result->cascade (one stage: iterations = the skeleton's Guttman
 /// transforms, energy = its MDS stress), result->skeleton and
-/// result->skeleton_canonical (zero-mean frame, like cascade.positions).
+/// result->skeleton_canonical (zero-mean frame, like cascade.positions); a
+/// warning when the skeleton's repair left surface vertices out.
 /// @pre result->surface and result->tets are set; graph is the tets' edge graph
 /// @throws as scf()
 void unfold_scf(const EdgeGraph& graph, const ScfOptions& options, UnfoldResult* result);

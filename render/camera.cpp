@@ -65,9 +65,15 @@ double common_scale(const std::vector<const Eigen::MatrixX3d*>& shapes, const Vi
 
 Eigen::MatrixX3d project(const Eigen::MatrixX3d& V, const View& view, double scale, int width,
                          int height) {
-  Eigen::MatrixX3d W = in_view(V, view);
-  if (W.rows() == 0) return W;
-  const Eigen::RowVector3d center = 0.5 * (W.colwise().maxCoeff() + W.colwise().minCoeff());
+  return project_in_frame(V, V, view, scale, width, height);
+}
+
+Eigen::MatrixX3d project_in_frame(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& V,
+                                  const View& view, double scale, int width, int height) {
+  const Eigen::MatrixX3d W = in_view(points, view);
+  if (W.rows() == 0 || V.rows() == 0) return W;
+  const Eigen::MatrixX3d frame = in_view(V, view);
+  const Eigen::RowVector3d center = 0.5 * (frame.colwise().maxCoeff() + frame.colwise().minCoeff());
   Eigen::MatrixX3d pixels(W.rows(), 3);
   pixels.col(0) = (W.col(0).array() - center[0]) * scale + 0.5 * width;
   pixels.col(1) = (center[1] - W.col(1).array()) * scale + 0.5 * height;

@@ -37,4 +37,9 @@ double common_scale(const std::vector<const Eigen::MatrixX3d*>& shapes, const Vi
 Eigen::MatrixX3d project(const Eigen::MatrixX3d& V, const View& view, double scale, int width,
                          int height);
 
+/// project() of `points` in the frame of V: placed where project(V, ...) puts
+/// the same positions (V's bounding box centred), e.g. lines drawn over V.
+Eigen::MatrixX3d project_in_frame(const Eigen::MatrixX3d& points, const Eigen::MatrixX3d& V,
+                                  const View& view, double scale, int width, int height);
+
 }  // namespace unfold

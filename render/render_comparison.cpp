@@ -23,6 +23,10 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
                        std::to_string(p.values.size()) + " values for " +
                        std::to_string(p.V.rows()) + " vertices");
     values.insert(values.end(), p.values.data(), p.values.data() + p.values.size());
+    if (p.lines.size() > 0 &&
+        (p.lines.minCoeff() < 0 || p.lines.maxCoeff() >= p.line_points.rows()))
+      throw UsageError("render_comparison: panel '" + p.title + "' has a line to a point of " +
+                       std::to_string(p.line_points.rows()) + " that does not exist");
   }
   // The colour scale ends at the 98th percentile: a few extreme vertices would
   // otherwise push every other one into the darkest colours.
@@ -48,6 +52,12 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
       const Eigen::MatrixX3f colors =
           p.values.size() ? color_map(p.values, 0, value_max) : Eigen::MatrixX3f();
       render_mesh(p.V, p.F, colors, views[row], scale, options.shading, &canvas);
+      if (p.lines.rows() > 0) {
+        const Eigen::MatrixX3d ends = project_in_frame(p.line_points, p.V, views[row], scale, w, h);
+        for (int k = 0; k < p.lines.rows(); ++k)
+          draw_line(ends(p.lines(k, 0), 0), ends(p.lines(k, 0), 1), ends(p.lines(k, 1), 0),
+                    ends(p.lines(k, 1), 1), {220, 30, 30}, 2 * s, &canvas.image);
+      }
       const int x = int(col) * options.panel_width,
                 y = kCaptionHeight + int(row) * options.panel_height;
       paste(downsample(canvas.image, s), x, y, &out);

@@ -17,6 +17,10 @@ struct RenderPanel {
   Eigen::MatrixX3d V;
   Eigen::MatrixX3i F;      ///< triangles
   Eigen::VectorXd values;  ///< per-vertex values to colour by, or empty for plain shading
+  /// line segments drawn over the shaded mesh (not hidden by it), e.g. a
+  /// skeleton inside it: endpoints line_points.row(lines(k, 0)) and (lines(k, 1))
+  Eigen::MatrixX3d line_points{};
+  Eigen::MatrixX2i lines{};
 };
 
 struct RenderOptions {
@@ -35,8 +39,9 @@ constexpr int kCaptionHeight = 28;
 /// from the first panel's shape; each row uses one scale for all columns.
 /// Panels with values are coloured by them on one common scale from 0 to the
 /// 98th percentile of all values (higher values take the top colour).
+/// Panels with lines have them drawn in red over the mesh, 2 pixels wide.
 /// @throws UsageError for no panels, sizes < 16 pixels, supersample < 1, bad up_axis,
-///         or panel data of inconsistent sizes
+///         or panel data of inconsistent sizes (a line naming a point that does not exist)
 Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOptions& options);
 
 }  // namespace unfold

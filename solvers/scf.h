@@ -43,8 +43,13 @@ void validate_scf_options(const ScfOptions& options);
 /// @param P     rest positions of every graph vertex; its first rows are the surface's
 /// @param num_surface_vertices the surface's vertices are P's first rows
 /// @param F     the surface's triangles (indices into those rows)
+/// @param T     the tets over P, or none: when the surface's repair leaves
+///              vertices out of the contraction (curve_skeleton), the boundary
+///              of the tets is contracted too, and the skeleton leaving fewer
+///              out is kept (the tetrahedralization closes seams the repair
+///              cannot, e.g. the davids' neck at 2k)
 /// @throws as curve_skeleton and unbend_skeleton; UsageError for bad options or sizes
 ScfResult scf(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int num_surface_vertices,
-              const Eigen::MatrixX3i& F, const ScfOptions& options);
+              const Eigen::MatrixX3i& F, const Eigen::MatrixX4i& T, const ScfOptions& options);
 
 }  // namespace unfold

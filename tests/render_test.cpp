@@ -4,6 +4,7 @@
 #include <stb/stb_image.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -125,6 +126,41 @@ TEST(RenderComparison, SameScaleInBothColumns) {
   EXPECT_NEAR(double(right) / left, 4.0, 0.6);
 }
 
+// A segment inside an ellipsoid, along its long axis through its centre, is
+// drawn over it in both views, on the centre row of each and nowhere else.
+TEST(RenderComparison, LinesAreDrawnOverTheMeshWhereTheyAre) {
+  SurfaceMesh ellipsoid = test::uv_sphere(12, 16);
+  ellipsoid.V.col(0) *= 3;
+  RenderPanel plain{"plain", ellipsoid.V, triangulate_faces(ellipsoid), {}};
+  RenderPanel lined = plain;
+  lined.line_points.resize(2, 3);
+  lined.line_points << -1.5, 0, 0, 1.5, 0, 0;
+  lined.lines.resize(1, 2);
+  lined.lines << 0, 1;
+  RenderOptions options;
+  options.panel_width = 160;
+  options.panel_height = 100;
+  const Image a = render_comparison({plain}, options), b = render_comparison({lined}, options);
+  for (int view = 0; view < 2; ++view) {
+    const int y0 = kCaptionHeight + view * options.panel_height;
+    int changed = 0, x_min = options.panel_width, x_max = 0;
+    for (int y = y0; y < y0 + options.panel_height; ++y)
+      for (int x = 0; x < options.panel_width; ++x) {
+        if (a.at(x, y) == b.at(x, y)) continue;
+        ++changed;
+        EXPECT_LE(std::abs(y - (y0 + options.panel_height / 2)), 2) << x << "," << y;
+        EXPECT_GT(b.at(x, y).r, b.at(x, y).g + 40) << x << "," << y;  // red
+        x_min = std::min(x_min, x);
+        x_max = std::max(x_max, x);
+      }
+    // The segment is half the ellipsoid's length, which nearly fills the panel's width.
+    EXPECT_NEAR(x_max - x_min, 0.5 * (options.panel_width - 16), 6) << view;
+    EXPECT_GE(changed, 2 * (x_max - x_min)) << view;  // 2 pixels wide
+  }
+  lined.lines(0, 1) = 2;
+  EXPECT_THROW(render_comparison({lined}, options), UsageError);
+}
+
 TEST(ColorMap, EndsAndClamping) {
   EXPECT_NEAR(color_map(0.0)[0], 0.267f, 1e-3);
   EXPECT_NEAR(color_map(1.0)[1], 0.906f, 1e-3);
@@ -223,6 +259,9 @@ TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {
   EXPECT_EQ(run_unfold("--beta_sweep 1,x --render " + picture), 2);
   EXPECT_EQ(run_unfold("--beta_sweep 1,2"), 2);  // no --render
   EXPECT_EQ(run_unfold("--render " + dir.file("x.jpg")), 5);
+  // The skeleton is method scf's, drawn in the before/after picture only.
+  EXPECT_EQ(run_unfold("--render_skeleton --render " + picture), 2);
+  EXPECT_EQ(run_unfold("--method scf --render_skeleton"), 2);
 }
 
 TEST(PlotConvergence, DrawsBothSeries) {

@@ -1,7 +1,9 @@
 // The SCF baseline: the curve skeleton of the demo animal matches its rig and
-// holes are closed for it, MDS straightens a bent chain keeping its bone
-// lengths, a rigid motion of the input moves the output rigidly, and surfaces
-// without a skeleton fail with typed errors.
+// holes are closed for it, surfaces the halfedge mesh cannot take are
+// repaired, MDS straightens a bent chain keeping its bone
+// lengths, a rigid motion of the input moves the output rigidly, the
+// before/after picture draws the skeletons, and surfaces without a skeleton
+// fail with typed errors.
 #include "solvers/scf.h"
 
 #include <gtest/gtest.h>
@@ -15,11 +17,14 @@
 #include "core/errors.h"
 #include "mesh/curve_skeleton.h"
 #include "mesh/edge_graph.h"
+#include "mesh/read_surface_mesh.h"
 #include "metrics/rigid_alignment.h"
+#include "pipeline/result_pictures.h"
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
 #include "solvers/skeleton_deformation.h"
 #include "solvers/unbend_skeleton.h"
+#include "test_meshes.h"
 
 namespace unfold {
 namespace {
@@ -93,6 +98,58 @@ TEST(CurveSkeleton, ClosesHolesWithoutNewVertices) {
   EXPECT_GE(s.edges.rows(), 5);
 }
 
+// Surfaces the halfedge mesh cannot take as they are (centaur4 and the davids
+// after simplification): triangles whose orientation disagrees with their
+// neighbours', a triangle twice, and holes; repaired, every vertex has a node
+// and the skeleton keeps the limbs.
+TEST(CurveSkeleton, RepairsInconsistentOrientationAndRepeatedTriangles) {
+  const SurfaceMesh rest = make_articulated_shape(ShapePose::rest(), 24);
+  const Eigen::MatrixX3i T = triangulate_faces(rest);
+  Eigen::MatrixX3i F(T.rows() - 1, 3);
+  F << T.topRows(T.rows() - 2), T.row(0);  // a hole, and triangle 0 twice
+  for (int f = 10; f < F.rows(); f += 37) std::swap(F(f, 1), F(f, 2));
+  const CurveSkeleton s = curve_skeleton(rest.V, F);
+  EXPECT_EQ(s.node_of_vertex.size(), rest.V.rows());
+  EXPECT_GE(s.node_of_vertex.minCoeff(), 0);
+  int leaves = 0;
+  for (const int d : degrees(s)) leaves += d == 1;
+  EXPECT_GE(leaves, 6);  // four legs, tail, head
+  EXPECT_EQ(s.num_left_out, 0);
+}
+
+// A small octahedron hanging off the animal at one vertex: the repair splits
+// that vertex, keeps the animal and leaves the octahedron's other five
+// vertices out; they take nodes all the same, and are counted.
+TEST(CurveSkeleton, VerticesSplitOffByTheRepairTakeTheirNearestVertexsNode) {
+  const SurfaceMesh animal = make_articulated_shape(ShapePose::rest(), 24);
+  const Eigen::MatrixX3i T = triangulate_faces(animal);
+  const int n = int(animal.V.rows());
+  const Vector3d p = animal.V.row(0).transpose();
+  const Vector3d d = (p - animal.V.colwise().mean().transpose()).normalized();
+  const Vector3d u = d.unitOrthogonal(), w = d.cross(u);
+  const double r = 0.05;
+  Eigen::MatrixX3d V(n + 5, 3);
+  V.topRows(n) = animal.V;
+  // Octahedron corners: 0 (the animal's vertex 0) and the tip along d, then +-u, +-w.
+  const Vector3d c = p + r * d;
+  V.row(n) = (c + r * d).transpose();
+  V.row(n + 1) = (c + r * u).transpose();
+  V.row(n + 2) = (c + r * w).transpose();
+  V.row(n + 3) = (c - r * u).transpose();
+  V.row(n + 4) = (c - r * w).transpose();
+  const std::array<int, 4> ring = {n + 1, n + 2, n + 3, n + 4};
+  Eigen::MatrixX3i F(T.rows() + 8, 3);
+  F.topRows(T.rows()) = T;
+  for (int k = 0; k < 4; ++k) {
+    F.row(T.rows() + k) << n, ring[size_t(k)], ring[size_t((k + 1) % 4)];
+    F.row(T.rows() + 4 + k) << 0, ring[size_t((k + 1) % 4)], ring[size_t(k)];
+  }
+  const CurveSkeleton s = curve_skeleton(V, F);
+  EXPECT_EQ(s.num_left_out, 5);
+  ASSERT_EQ(s.node_of_vertex.size(), n + 5);
+  EXPECT_GE(s.node_of_vertex.minCoeff(), 0);
+}
+
 TEST(UnbendSkeleton, StraightensABentChainKeepingItsBoneLengths) {
   // A chain bent in 3D, bones of uneven length.
   const int n = 12;
@@ -139,6 +196,14 @@ TEST(Scf, UnbendingAndDeformationCommuteWithRigidMotions) {
   EXPECT_GT(aligned_distance(pose.V, da.positions), 0.05 * size);
 }
 
+// method scf through the whole pipeline, no metrics (not needed here).
+Options scf_options() {
+  Options options;
+  options.method = "scf";
+  options.metrics = {};
+  return options;
+}
+
 // CGAL's contraction collapses edges in an order that follows memory
 // addresses, so two runs (moved or not) differ (docs/reliability.md): through
 // the whole pipeline the moved input's form is the form moved, up to that
@@ -148,21 +213,70 @@ TEST(Scf, UnbendingAndDeformationCommuteWithRigidMotions) {
 // The steps after the skeleton are exact (UnbendingAndDeformationCommute...).
 TEST(Scf, RigidMotionOfTheInputMovesTheOutputRigidly) {
   const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(0), 24);
-  Options options;
-  options.method = "scf";
-  options.metrics = {};
-  const UnfoldResult a = unfold_surface(pose, options);
+  const UnfoldResult a = unfold_surface(pose, scf_options());
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   SurfaceMesh moved = pose;
   moved.V = (pose.V * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
-  const UnfoldResult b = unfold_surface(moved, options);
+  const UnfoldResult b = unfold_surface(moved, scf_options());
   ASSERT_EQ(a.canonical.V.rows(), b.canonical.V.rows());
   // The motion itself: b's form is a's moved by R and the translation.
   const Eigen::MatrixX3d expected =
       (a.canonical.V * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
   const double size = (pose.V.rowwise() - pose.V.colwise().mean()).rowwise().norm().maxCoeff();
   EXPECT_LT((b.canonical.V - expected).rowwise().norm().mean(), 0.3 * size);
+}
+
+// --render_skeleton: the skeleton drawn over the input, the straightened one
+// over the canonical form: the picture changes in both columns, in red, and
+// only within the shape's silhouette (the skeleton is inside the body) or a
+// line's width off it.
+TEST(Scf, BeforeAfterPictureDrawsBothSkeletons) {
+  const SurfaceMesh pose = make_articulated_shape(ShapePose::preset(0), 16);
+  const UnfoldResult result = unfold_surface(pose, scf_options());
+  const RenderOptions render;
+  const Image plain = render_before_after(result, render);
+  const Image drawn = render_before_after(result, render, false, true);
+  ASSERT_EQ(plain.width, drawn.width);
+  const Rgb white{255, 255, 255};
+  const auto near_shape = [&](int x, int y) {
+    for (int dy = -2; dy <= 2; ++dy)
+      for (int dx = -2; dx <= 2; ++dx)
+        if (plain.contains(x + dx, y + dy) && plain.at(x + dx, y + dy) != white) return true;
+    return false;
+  };
+  for (int col = 0; col < 2; ++col) {
+    int changed = 0;
+    for (int y = kCaptionHeight; y < plain.height; ++y)
+      for (int x = col * render.panel_width; x < (col + 1) * render.panel_width; ++x) {
+        if (plain.at(x, y) == drawn.at(x, y)) continue;
+        ++changed;
+        EXPECT_GT(drawn.at(x, y).r, drawn.at(x, y).g) << x << "," << y;
+        EXPECT_TRUE(near_shape(x, y)) << x << "," << y;
+      }
+    EXPECT_GT(changed, 100) << col;
+  }
+  Options lsmds = scf_options();
+  lsmds.method = "lsmds";
+  EXPECT_THROW(render_before_after(unfold_surface(pose, lsmds), render, false, true), UsageError);
+}
+
+// centaur4 at 2k: the surface's repair splits 152 vertices off (holes whose
+// boundaries touch themselves), the robust tets close them by the winding
+// number, and the skeleton of the tets' boundary carries every vertex.
+TEST(Scf, VerticesTheRepairLeavesOutAreCarriedByTheTetBoundarysSkeleton) {
+  const std::string path = test::shared_data("tosca/centaur4.off");
+  if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/centaur4.off";
+  Options options = scf_options();
+  options.target_vertices = 2000;
+  const PreparedMesh prepared = prepare_mesh(read_surface_mesh(path), options);
+  const SurfaceMesh& surface = prepared.surface;
+  ASSERT_GT(curve_skeleton(surface.V, triangulate_faces(surface)).num_left_out, 0);
+  const UnfoldResult r = unfold_prepared(prepared, options);
+  EXPECT_EQ(r.skeleton.num_left_out, 0);
+  ASSERT_EQ(r.skeleton.node_of_vertex.size(), surface.V.rows());
+  EXPECT_GE(r.skeleton.node_of_vertex.minCoeff(), 0);
+  for (const std::string& w : r.warnings) EXPECT_EQ(w.find("scf:"), std::string::npos) << w;
 }
 
 TEST(Scf, SurfacesWithoutASkeletonFailWithTypedErrors) {
@@ -181,10 +295,6 @@ TEST(Scf, SurfacesWithoutASkeletonFailWithTypedErrors) {
   Eigen::MatrixX3i F2(2 * T.rows(), 3);
   F2 << T, T.array() + n;
   EXPECT_THROW(curve_skeleton(V2, F2), InputError);
-  // Non-manifold: a triangle twice.
-  Eigen::MatrixX3i doubled(T.rows() + 1, 3);
-  doubled << T, T.row(0);
-  EXPECT_THROW(curve_skeleton(animal.V, doubled), InputError);
   ScfOptions bad;
   bad.blend_radius = 0;
   EXPECT_THROW(validate_scf_options(bad), UsageError);
