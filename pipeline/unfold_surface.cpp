@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/fork_safety.h"
 #include "core/parallel.h"
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
@@ -540,7 +541,7 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
   PendingTets pending;
   PreparedMesh prepared = prepare_surface(input, options, &pending);
   if (prepared.tets_deferred) return unfold_prepared(prepared, options, nullptr);
-  if (!tets_from_unfolded_on_contact(options) || pending.open) {
+  if (!tets_from_unfolded_on_contact(options) || pending.open || !kForkAlongsideThreads) {
     make_input_tets(options, pending, &prepared);
     return unfold_prepared(prepared, options, nullptr);
   }

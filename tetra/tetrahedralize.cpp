@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/fork_safety.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "mesh/position_order.h"
@@ -54,17 +55,19 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   // speculatively for auto (most real scans go robust; a clean surface drops
   // them); below, auto's conforming try starts at once, in TetGen's process,
   // and is stopped as soon as the count finds a pair (TetGen would only refuse
-  // the surface, after seconds of work).
+  // the surface, after seconds of work). Under ASan it is counted first
+  // (core/fork_safety.h).
   const bool counted = known_intersecting_faces >= 0;
   std::shared_future<int> count;
-  if (counted) {
+  const auto count_faces = [&surface] {
+    return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
+  };
+  if (counted || !kForkAlongsideThreads) {
     std::promise<int> known;
-    known.set_value(known_intersecting_faces);
+    known.set_value(counted ? known_intersecting_faces : count_faces());
     count = known.get_future().share();
   } else {
-    count = std::async(std::launch::async, [&surface] {
-              return int(intersecting_face_pairs(surface.V, triangulate_faces(surface)).size());
-            }).share();
+    count = std::async(std::launch::async, count_faces).share();
   }
   std::optional<RobustStart> first_steps;
   if (options.route == "robust" ||
