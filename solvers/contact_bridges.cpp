@@ -1,6 +1,7 @@
 #include "solvers/contact_bridges.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -141,8 +142,9 @@ double greedy_path_length(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int
 // exceeds both the reach and kDetour times their distance in space. An edge
 // inside a limb joins surface points around it (a detour of about pi/2); one
 // across a contact joins points that only a long way along the surface
-// connects. Each source's Dijkstra stops once its targets are settled or the
-// bound is passed, so only the ends of bridges explore a whole ball.
+// connects. A greedy path within the bound proves nearly every pair no
+// bridge; the others (bridges, pairs round a concave part) take A*, which
+// explores the whole bound only for a bridge.
 std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_graph,
                                const Eigen::MatrixX3d& P, double geodesic) {
   const int ns = int(surface.V.rows());
@@ -150,8 +152,8 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
   const EdgeGraph graph = build_edge_graph(ns, Eigen::MatrixXi(F));
   const double reach = geodesic * std::sqrt(surface_area(surface.V, F));
   const std::vector<int> nearest = nearest_surface_vertex(tet_graph, P, ns);
-  // the pairs to measure, from their lower end: (other end, tet edge)
-  std::vector<std::vector<std::pair<int, int>>> pairs(static_cast<size_t>(ns));
+  // the pairs to measure: (one end, the other, tet edge)
+  std::vector<std::array<int, 3>> pairs;
   for (int e = 0; e < tet_graph.num_edges(); ++e) {
     int a = nearest[size_t(tet_graph.edges(e, 0))];
     int b = nearest[size_t(tet_graph.edges(e, 1))];
@@ -160,31 +162,23 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
     if (std::binary_search(graph.neighbors.begin() + graph.offsets[size_t(a)],
                            graph.neighbors.begin() + graph.offsets[size_t(a) + 1], b))
       continue;  // a surface edge
-    pairs[size_t(a)].emplace_back(b, e);
+    pairs.push_back({a, b, e});
   }
   std::vector<char> bridge(size_t(tet_graph.num_edges()), 0);
 #pragma omp parallel if (ns >= kMinParallelRows)
   {
     BoundedSearch search(graph, P);
 #pragma omp for schedule(dynamic, 256)
-    for (int i = 0; i < ns; ++i) {
-      const auto& targets = pairs[size_t(i)];
-      if (targets.empty()) continue;
-      const auto bound = [&](int j) {
-        return std::max(reach, kDetour * (P.row(i) - P.row(j)).norm());
-      };
-      for (const auto& [j, e] : targets) {
-        // a greedy path within the bound proves a pair no bridge, nearly
-        // always; the others (bridges, pairs round a concave part) take A*
-        const double b = bound(j);
-        if (greedy_path_length(graph, P, i, j, b) <= b) continue;
-        const Eigen::RowVector3d goal = P.row(j);
-        search.run(
-            &i, 1, b, [&](int v) { return (P.row(v) - goal).norm(); },
-            [j](int v) { return v != j; });
-        // unsettled, j is beyond the bound, or its tentative distance bounds it
-        if (search.distance(j) > b) bridge[size_t(e)] = 1;
-      }
+    for (size_t k = 0; k < pairs.size(); ++k) {
+      const auto [i, j, e] = pairs[k];
+      const double bound = std::max(reach, kDetour * (P.row(i) - P.row(j)).norm());
+      if (greedy_path_length(graph, P, i, j, bound) <= bound) continue;
+      const Eigen::RowVector3d goal = P.row(j);
+      search.run(
+          &i, 1, bound, [&](int v) { return (P.row(v) - goal).norm(); },
+          [j = j](int v) { return v != j; });
+      // unsettled, j is beyond the bound, or its tentative distance bounds it
+      if (search.distance(j) > bound) bridge[size_t(e)] = 1;
     }
   }
   return bridge;
