@@ -8,15 +8,18 @@
 #include "core/errors.h"
 #include "metrics/rectilinearity.h"
 #include "metrics/shape_retrieval.h"
+#include "metrics/silhouette_area.h"
 
 namespace unfold {
-namespace {
 
-double bounding_box_volume(const Eigen::MatrixX3d& V) {
-  return (V.colwise().maxCoeff() - V.colwise().minCoeff()).prod();
+long axis_silhouette_pixels(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+  // Into the unit ball, which the views' square [-1, 1]^2 frames.
+  const Eigen::MatrixX3d unit = V / V.rowwise().norm().maxCoeff();
+  long pixels = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    pixels += silhouette_pixels(unit, F, axis, kSilhouetteResolution);
+  return pixels;
 }
-
-}  // namespace
 
 Eigen::MatrixX3d evenly_spaced_rows(const Eigen::MatrixX3d& V, Eigen::Index count) {
   const Eigen::Index stride = std::max<Eigen::Index>(1, (V.rows() + count - 1) / count);
@@ -49,8 +52,11 @@ Eigen::Matrix3d ort_orientation(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
   Eigen::Matrix3d pca = eig.eigenvectors().rowwise().reverse().transpose();  // rows: axes
   if (pca.determinant() < 0) pca.row(2) *= -1;
   const Eigen::Matrix3d rect = rectilinearity_orientation(V, F);
-  return bounding_box_volume(V * rect.transpose()) < bounding_box_volume(V * pca.transpose()) ? rect
-                                                                                              : pca;
+  // Ties to rectilinearity, as in the public reimplementation.
+  return axis_silhouette_pixels(V * pca.transpose(), F) <
+                 axis_silhouette_pixels(V * rect.transpose(), F)
+             ? pca
+             : rect;
 }
 
 Eigen::MatrixX3d ort_normalise(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {

@@ -13,7 +13,8 @@
 namespace unfold {
 namespace {
 
-constexpr const char* kMagic = "unfold cmbof vocabulary v1";
+// v2: learned from features of the silhouette-area orientation (descriptor v3).
+constexpr const char* kMagic = "unfold cmbof vocabulary v2";
 
 }  // namespace
 

@@ -14,7 +14,9 @@
 namespace unfold {
 namespace {
 
-constexpr const char* kMagic = "unfold retrieval descriptor v2";
+// v3: the ORT normalisation chooses its orientation by silhouette area, so
+// the ORT samples and CMBOF features of earlier descriptors are stale.
+constexpr const char* kMagic = "unfold retrieval descriptor v3";
 
 void write_points(std::ostream& s, const Eigen::MatrixX3d& P) {
   s << P.rows() << '\n';

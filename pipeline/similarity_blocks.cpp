@@ -14,7 +14,9 @@ namespace unfold {
 namespace fs = std::filesystem;
 namespace {
 
-constexpr const char* kMagic = "unfold similarity block v1";
+// v2: the ORT normalisation chooses its orientation by silhouette area, so
+// the ORT and CMBOF rows of earlier blocks are stale.
+constexpr const char* kMagic = "unfold similarity block v2";
 
 std::string shape_header(const std::vector<std::string>& names) {
   std::string line = "shape";

@@ -6,7 +6,7 @@
 // block file that matches its shapes and options, computes the rows no file
 // had, and mirrors.
 //
-// Block file (text): the line "unfold similarity block v1", the framework's
+// Block file (text): the line "unfold similarity block v2", the framework's
 // similarity_key (pipeline/retrieval_descriptors.h), the line "shape,<name>,<name>,...", then
 // one line per row "<name>,<value>,...", empty fields for j <= k, values with
 // an exact round trip.

@@ -156,8 +156,12 @@ TEST(Cmbof, InvariantToPoseNormalisationAndSeparatesTwoClasses) {
       else
         between = std::min(between, D(i, j));
   EXPECT_LT(within, between) << "every pair of a class nearer than any pair across";
-  EXPECT_LT(D(0, 6), 0.25 * between) << "the turned, scaled copy is near its original";
-  EXPECT_LT(D(0, 6), D(0, 1));
+  // The turned, scaled copy is oriented like its original up to the clock's
+  // rotations, but its depth images are not the same pixels (a view's in-plane
+  // turn is fixed by its direction alone, so matched views can be turned
+  // against each other by a non-right angle), and SIFT does not find quite the
+  // same features: the distance is not 0, but well under the other poses'.
+  EXPECT_LT(D(0, 6), 0.5 * std::min(D(0, 1), D(0, 2))) << "the copy is near its original";
   RetrievalDescriptor bare = d[0];
   bare.cmbof_histograms.clear();
   EXPECT_THROW(framework_dissimilarity(RetrievalFramework::cmbof, bare, d[1], options), UsageError);

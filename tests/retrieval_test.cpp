@@ -1,10 +1,13 @@
 // Retrieval: the benchmark measures on a hand-made matrix whose values are
 // worked out by hand; rectilinearity and the ORT normalisation invariant to a
-// rigid motion and a scale; the ORT dissimilarity's value on a hand-made pair;
+// rigid motion and a scale; silhouette pixels counted by hand and as the
+// renderer draws them, and the orientation they choose where a bounding box
+// would choose the other; the ORT dissimilarity's value on a hand-made pair;
 // similarity blocks (every framework, CMBOF too) that assemble to the matrix
 // computed in one go; the descriptors' exact round trip.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -13,8 +16,10 @@
 #include "metrics/pose_invariance.h"
 #include "metrics/rectilinearity.h"
 #include "metrics/retrieval_measures.h"
+#include "metrics/silhouette_area.h"
 #include "pipeline/cmbof_vocabulary.h"
 #include "pipeline/similarity_blocks.h"
+#include "render/rasterize.h"
 #include "shapes/articulated_shape.h"
 #include "test_files.h"
 #include "test_meshes.h"
@@ -122,6 +127,81 @@ TEST(Ort, TheNormalisedSampleIsInvariantToARigidMotionAndAScale) {
   }
   EXPECT_LT(centroid.norm(), 1e-12);
   EXPECT_THROW(ort_sample(shape.V, F, 3), UsageError);
+}
+
+TEST(Silhouette, PixelsOfASquareByHandAndOfAShapeAsTheRendererDrawsThem) {
+  // The square |x|, |y| <= 0.5 at z = 0.3: along z it covers the middle half of
+  // the grid (pixel centres never lie on its edges), seen edge-on nothing.
+  Eigen::MatrixX3d V(4, 3);
+  V << -0.5, -0.5, 0.3, 0.5, -0.5, 0.3, 0.5, 0.5, 0.3, -0.5, 0.5, 0.3;
+  Eigen::MatrixX3i F(2, 3);
+  F << 0, 1, 2, 0, 2, 3;
+  EXPECT_EQ(silhouette_pixels(V, F, 2, 256), 128 * 128);
+  EXPECT_EQ(silhouette_pixels(V, F.rowwise().reverse(), 2, 256), 128 * 128) << "either winding";
+  EXPECT_EQ(silhouette_pixels(V, F, 0, 256), 0);
+  EXPECT_EQ(silhouette_pixels(V, F, 1, 256), 0);
+  // Moved half out of the square [-1, 1]^2 in x and y: a quarter stays.
+  const Eigen::MatrixX3d out = V.rowwise() + Eigen::RowVector3d(1, 1, 0);
+  EXPECT_EQ(silhouette_pixels(out, F, 2, 256), 64 * 64);
+  // A shape turned at random, in the unit ball: every axis view covers the
+  // pixels render/'s rasterizer draws for the same projection.
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(2), 24);
+  const Eigen::MatrixX3i G = triangulate_faces(shape);
+  Eigen::MatrixX3d W = (shape.V.rowwise() - shape.V.colwise().mean()) * test::random_rotation(4);
+  W /= W.rowwise().norm().maxCoeff();
+  const int size = 96;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = axis == 0 ? 1 : 0, v = axis == 2 ? 1 : 2;
+    Canvas canvas(size, size);
+    for (Eigen::Index f = 0; f < G.rows(); ++f) {
+      Eigen::Matrix3d xyz;
+      for (int k = 0; k < 3; ++k)
+        xyz.row(k) << (W(G(f, k), u) + 1) * size / 2, (W(G(f, k), v) + 1) * size / 2, 0;
+      rasterize_triangle(xyz, Eigen::Matrix3f::Zero(), &canvas);
+    }
+    const long drawn = std::count_if(canvas.depth.begin(), canvas.depth.end(),
+                                     [](double d) { return std::isfinite(d); });
+    EXPECT_GT(drawn, size * size / 20) << axis;
+    EXPECT_EQ(silhouette_pixels(W, G, axis, size), drawn) << axis;
+  }
+  EXPECT_THROW(silhouette_pixels(V, F, 3, 256), UsageError);
+  EXPECT_THROW(silhouette_pixels(V, F, 0, 0), UsageError);
+}
+
+TEST(Ort, TheOrientationIsTheOneWithTheSmallerSilhouetteArea) {
+  // Two 1 x 1 x 2 boxes, on the diagonal of the xy plane 2 apart: the principal
+  // axes are the diagonals (u, v) and z, and the rectilinearity orientation is
+  // the boxes' own axes. The diagonal frame has the smaller bounding box
+  // (3 sqrt 2 x sqrt 2 x 2 = 12 against 3 x 3 x 2 = 18) but the larger
+  // silhouettes (uv 2, vz 2 sqrt 2, uz 4 sqrt 2: 10.5 against 2 + 4 + 4 = 10),
+  // so the orientation must be the boxes' own, up to a rotation of the cube.
+  SurfaceMesh two = test::cube();
+  two.V.col(2) *= 2;
+  const Eigen::Index n = two.V.rows();
+  two.V.conservativeResize(2 * n, 3);
+  two.V.bottomRows(n) = two.V.topRows(n).rowwise() + Eigen::RowVector3d(2, 2, 0);
+  for (size_t f = 0, faces = two.faces.size(); f < faces; ++f) {
+    std::vector<int> face = two.faces[f];
+    for (int& i : face) i += int(n);
+    two.faces.push_back(face);
+  }
+  const Eigen::MatrixX3i F = triangulate_faces(two);
+  const Eigen::MatrixX3d centred = two.V.rowwise() - Eigen::RowVector3d(1.5, 1.5, 1);
+  const Eigen::Matrix3d diagonal = Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()).matrix();
+  const Eigen::MatrixX3d in_diagonal = centred * diagonal.transpose();
+  const auto box_volume = [](const Eigen::MatrixX3d& P) {
+    return (P.colwise().maxCoeff() - P.colwise().minCoeff()).prod();
+  };
+  ASSERT_NEAR(box_volume(in_diagonal), 12, 1e-12);
+  ASSERT_NEAR(box_volume(centred), 18, 1e-12);
+  EXPECT_GT(axis_silhouette_pixels(in_diagonal, F), axis_silhouette_pixels(centred, F) * 1.03);
+  // Turned at random (neither candidate is the input's frame), then oriented.
+  const Eigen::Matrix3d turn = test::random_rotation(7);
+  const Eigen::Matrix3d R = ort_orientation(centred * turn.transpose(), F) * turn;
+  double nearest_cube_rotation = INFINITY;
+  for (const Eigen::Matrix3d& C : cube_rotations())
+    nearest_cube_rotation = std::min(nearest_cube_rotation, (R - C).cwiseAbs().maxCoeff());
+  EXPECT_LT(nearest_cube_rotation, 1e-6);
 }
 
 TEST(Ort, HandMadePairHasItsKnownMeanSquaredError) {
