@@ -257,6 +257,43 @@ TEST(EnergyEdgeLength, GrowsLikeTheArapTermFarFromRest) {
   EXPECT_NEAR(term.evaluate(far, s.R, 1.0, nullptr) / quadratic, 1.0, 1e-3);
 }
 
+// A sliver at rest (the robust route's carved Delaunay mesh has them down to
+// 1e-16 l^3) is measured against kMinRestVolume l^3: its term stays of the
+// order of the others' instead of (l dV / V0)^2. A regular tet keeps
+// l^2 (V / V0 - 1)^2.
+TEST(EnergyVolume, ASliverIsMeasuredAgainstTheFloorARegularTetAgainstItself) {
+  Eigen::MatrixX3d P(8, 3);
+  // a regular tet (edge 2 sqrt 2), then a sliver: four nearly coplanar points
+  P << 1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1,  //
+      0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1e-12;
+  Eigen::MatrixX4i T(2, 4);
+  T << 0, 1, 2, 3, 4, 5, 6, 7;
+  const VolumeEnergy term(P, T, 1.0);
+  const Rotations R(8, Eigen::Matrix3d::Identity());
+  EXPECT_NEAR(term.evaluate(P, R, 1.0, nullptr), 0.0, 1e-20);
+  const auto volume = [](const Eigen::MatrixX3d& X, int a) {
+    return (X.row(a + 1) - X.row(a)).dot((X.row(a + 2) - X.row(a)).cross(X.row(a + 3) - X.row(a))) /
+           6.0;
+  };
+  const auto l = [&](int a) {
+    double sum = 0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) sum += (P.row(a + i) - P.row(a + j)).squaredNorm();
+    return std::sqrt(sum / 6.0);
+  };
+  Eigen::MatrixX3d Q = P;
+  Q(0, 2) += 0.1;  // the regular tet's volume changes
+  const double v0 = volume(P, 0), l0 = l(0);
+  EXPECT_NEAR(term.evaluate(Q, R, 1.0, nullptr), std::pow(l0 * (volume(Q, 0) / v0 - 1), 2), 1e-12);
+  Q = P;
+  Q(7, 2) += 0.01;  // the sliver is lifted
+  const double l4 = l(4), floor = kMinRestVolume * std::pow(l4, 3);
+  const double expected = std::pow(l4 * (volume(Q, 4) - volume(P, 4)) / floor, 2);
+  EXPECT_NEAR(term.evaluate(Q, R, 1.0, nullptr), expected, 1e-9 * expected);
+  // against its own volume it would be ~1e20 times larger
+  EXPECT_LT(expected, 1e3);
+}
+
 TEST(EnergyArap, ZeroForARigidMotionWithItsRotation) {
   const EnergySetup s;
   const ArapEnergy arap(s.graph, s.mesh.V, s.uniform(), 1.0);

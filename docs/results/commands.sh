@@ -18,10 +18,11 @@ build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
   --target_vertices 2000 --jobs 2
 # Ours at full resolution: the paper's method, the integrated rotation field on
 # the input's tets and the default (docs/method.md: pose invariance, contact,
-# meshing), and the SCF baseline (docs/baselines.md: about 1 s per 1,000
-# vertices); pose pictures poses_<class>_<method>.png.
+# meshing), and the SCF and LSMDS baselines (docs/baselines.md; DPMU at 2k
+# only: about 2 hours of CPU at full resolution); pose pictures
+# poses_<class>_<method>.png.
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" \
-  --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml,configs/scf.yaml --jobs 2
+  --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml,configs/scf.yaml,configs/lsmds.yaml --jobs 2
 build/bin/unfold_batch --input_dir "$OUT/remeshed_dataset" --output_dir "$OUT/remeshed" \
   --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml --jobs 2
 
