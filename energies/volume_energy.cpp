@@ -22,7 +22,7 @@ VolumeEnergy::VolumeEnergy(const Eigen::MatrixX3d& rest, const Eigen::MatrixX4i&
     edge_scale_[t] = std::sqrt(sum / 6.0);
     const double floor = kMinRestVolume * std::pow(edge_scale_[t], 3);
     const double v0 = rest_volume_[t];
-    reference_volume_[t] = std::abs(v0) >= floor ? v0 : (v0 < 0 ? -floor : floor);
+    reference_volume_[t] = std::abs(v0) >= floor ? v0 : std::copysign(floor, v0);
   }
 }
 
