@@ -1,6 +1,13 @@
 // The project's only CGAL translation unit (the headers are heavy: keep them here).
 #include "mesh/curve_skeleton.h"
 
+// CGAL's containers (the skeletonization's halfedge structure) take their
+// memory from an OrderedArena: the skeletonization orders its edge collapses
+// by handle address, and with malloc's addresses the same surface gave
+// another skeleton on every run (cat0: 306 to 333 nodes).
+#include "core/ordered_arena.h"
+#define CGAL_ALLOCATOR(T) unfold::OrderedArenaAllocator<T>
+
 #include <CGAL/Mean_curvature_flow_skeletonization.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
@@ -202,7 +209,12 @@ CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
   const Eigen::RowVector3d centroid = V.colwise().mean();
   const double diameter = 2 * (V.rowwise() - centroid).rowwise().norm().maxCoeff();
   Skeletonization::Skeleton graph;
+  OrderedArena arena(std::size_t(1) << 36);  // address space: pages are taken as written
+  if (arena.capacity() == 0)
+    LOG(WARNING) << "scf: no address space for the skeleton's arena (ulimit -v?): the skeleton "
+                    "may differ from run to run";
   try {
+    const OrderedArena::Scope scope(&arena);
     Skeletonization skeletonize(mesh);
     skeletonize.set_quality_speed_tradeoff(options.quality_speed_tradeoff);
     skeletonize.set_medially_centered_speed_tradeoff(options.medially_centered_speed_tradeoff);
@@ -235,7 +247,8 @@ CurveSkeleton curve_skeleton(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& 
     const int a = int(boost::source(edge, graph)), b = int(boost::target(edge, graph));
     s.edges.row(e++) << std::min(a, b), std::max(a, b);
   }
-  LOG(INFO) << "scf: skeleton of " << num_nodes << " nodes, " << e << " bones";
+  LOG(INFO) << "scf: skeleton of " << num_nodes << " nodes, " << e << " bones ("
+            << arena.bytes_used() / 1e6 << " MB of CGAL's memory in the arena)";
   return s;
 }
 

@@ -304,13 +304,16 @@ RetrievalSet retrieval_set(const std::vector<std::string>& meshes,
 // CM-BOF's vocabulary of one label's set (pipeline/cmbof_vocabulary.h): read
 // from the output directory if learned there from these shapes with these
 // options, else learned and stored, so that every shard of a split run uses
-// the same; fills the set's word histograms.
+// the same (the key names the shapes and their features' fingerprints: a
+// shape unfolded again with --skip_existing is learned from again); fills the
+// set's word histograms.
 // @return the vocabulary's fingerprint; empty (no CMBOF for the label) when no
 //         view of any shape has a feature
 std::string prepare_cmbof(const Layout& out, const std::string& label, RetrievalSet* set,
                           const RetrievalOptions& options) {
   std::string key = "cmbof=" + cmbof_options_key(options.cmbof) + " shapes=";
-  for (const auto& name : set->names) key += name + ",";
+  for (size_t i = 0; i < set->names.size(); ++i)
+    key += set->names[i] + ":" + features_fingerprint(set->descriptors[i].cmbof) + ",";
   std::optional<Eigen::MatrixXf> vocabulary = read_vocabulary(out.vocabulary(label), key);
   if (!vocabulary) {
     std::vector<const CmbofFeatures*> features;

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -15,6 +17,17 @@ namespace {
 
 // v2: learned from features of the silhouette-area orientation (descriptor v3).
 constexpr const char* kMagic = "unfold cmbof vocabulary v2";
+
+// A 64-bit FNV-1a hash of the byte ranges, in hex.
+std::string fnv1a_hex(std::initializer_list<std::pair<const void*, size_t>> ranges) {
+  std::uint64_t hash = 14695981039346656037ull;
+  for (const auto& [data, bytes] : ranges)
+    for (size_t i = 0; i < bytes; ++i)
+      hash = (hash ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
+  std::ostringstream s;
+  s << std::hex << std::setw(16) << std::setfill('0') << hash;
+  return s.str();
+}
 
 }  // namespace
 
@@ -53,17 +66,15 @@ std::vector<WordHistogram> cmbof_histograms(const CmbofFeatures& features,
 }
 
 std::string vocabulary_fingerprint(const Eigen::MatrixXf& vocabulary) {
-  std::uint64_t hash = 14695981039346656037ull;
-  const auto mix = [&](const void* data, size_t bytes) {
-    for (size_t i = 0; i < bytes; ++i)
-      hash = (hash ^ static_cast<const unsigned char*>(data)[i]) * 1099511628211ull;
-  };
   const Eigen::Index size[2] = {vocabulary.rows(), vocabulary.cols()};
-  mix(size, sizeof size);
-  mix(vocabulary.data(), size_t(vocabulary.size()) * sizeof(float));
-  std::ostringstream s;
-  s << std::hex << std::setw(16) << std::setfill('0') << hash;
-  return s.str();
+  return fnv1a_hex(
+      {{size, sizeof size}, {vocabulary.data(), size_t(vocabulary.size()) * sizeof(float)}});
+}
+
+std::string features_fingerprint(const CmbofFeatures& features) {
+  const SiftDescriptors& d = features.descriptors;
+  return fnv1a_hex({{features.view_start.data(), features.view_start.size() * sizeof(int)},
+                    {d.data(), size_t(d.size())}});
 }
 
 void write_vocabulary(const std::string& path, const Eigen::MatrixXf& vocabulary,

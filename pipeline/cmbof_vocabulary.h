@@ -31,6 +31,11 @@ std::vector<WordHistogram> cmbof_histograms(const CmbofFeatures& features,
 /// A 64-bit FNV-1a hash of the vocabulary's size and values, in hex.
 std::string vocabulary_fingerprint(const Eigen::MatrixXf& vocabulary);
 
+/// A 64-bit FNV-1a hash of a shape's features, in hex: part of the vocabulary's
+/// key, so that a vocabulary learned before a shape was unfolded again is not
+/// read back.
+std::string features_fingerprint(const CmbofFeatures& features);
+
 /// Writes the vocabulary (text, exact round trip) atomically with `key` (what it
 /// depends on: options and shapes). @throws OutputError
 void write_vocabulary(const std::string& path, const Eigen::MatrixXf& vocabulary,

@@ -226,6 +226,28 @@ TEST(Ort, HandMadePairHasItsKnownMeanSquaredError) {
   EXPECT_THROW(ort_dissimilarity(A, Eigen::MatrixX3d(0, 3), 20), UsageError);
 }
 
+// The vocabulary's cache key holds each shape's features' fingerprint: a shape
+// unfolded again (--skip_existing) must not find the old vocabulary.
+TEST(CmbofVocabulary, TheFeaturesFingerprintFollowsEveryByteAndViewBoundary) {
+  CmbofOptions options;
+  options.view_subdivisions = 0, options.image_size = 64;
+  const SurfaceMesh s = make_articulated_shape(ShapePose::preset(0), 16);
+  const CmbofFeatures a =
+      cmbof_features(ort_normalise(s.V, triangulate_faces(s)), triangulate_faces(s), options);
+  ASSERT_GT(a.descriptors.rows(), 2);
+  CmbofFeatures b = a;
+  EXPECT_EQ(features_fingerprint(a), features_fingerprint(b));
+  b.descriptors(b.descriptors.rows() - 1, 127) ^= 1;
+  EXPECT_NE(features_fingerprint(a), features_fingerprint(b));
+  CmbofFeatures c = a;
+  for (int& start : c.view_start)
+    if (start > 0 && start < c.descriptors.rows()) {
+      --start;
+      break;
+    }
+  EXPECT_NE(features_fingerprint(a), features_fingerprint(c));
+}
+
 TEST(SimilarityBlocks, BlocksWrittenByShardsAssembleToTheOneGoMatrix) {
   std::vector<RetrievalDescriptor> d;
   std::vector<std::string> names;
