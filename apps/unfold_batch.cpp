@@ -16,7 +16,8 @@ DEFINE_int32(threads, 0,
 DEFINE_string(shard, "0/1",
               "i/N: run only the shapes k (sorted by name) with k % N == i, e.g. one Slurm "
               "array task; then collect with one run without --shard and --skip_existing");
-DEFINE_bool(skip_existing, false, "keep shapes whose results exist with status ok");
+DEFINE_bool(skip_existing, false,
+            "keep each shape's results of the configs that have one with status ok");
 DEFINE_int32(target_vertices, -1, "if >= 0: overrides simplify.target_vertices of every config");
 DEFINE_string(metrics, "",
               "if set: overrides metrics.compute of every config, e.g. E_rig,E_str skips E_geo "

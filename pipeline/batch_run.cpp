@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -147,9 +148,11 @@ std::string preparation_key(const Options& o) {
   return s.str();
 }
 
-// Everything one child does for one shape: every config, each failure in its row.
+// Everything one child does for one shape: every config it is to run (run[k]),
+// each failure in its row.
 void run_shape(const std::string& mesh_path, const std::vector<Options>& options,
-               const std::vector<std::string>& methods, const Layout& out) {
+               const std::vector<std::string>& methods, const std::vector<char>& run,
+               const Layout& out) {
   const std::string shape = stem(mesh_path);
   SurfaceMesh input;
   std::string read_error;
@@ -161,6 +164,7 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
   std::map<std::string, PreparedMesh> prepared;
   std::map<std::string, std::string> prepare_errors;
   for (size_t k = 0; k < options.size(); ++k) {
+    if (!run[k]) continue;
     BatchRow row{shape, shape_class(shape), methods[k], 0, 0, 0, 0, "ok"};
     try {
       if (!read_error.empty()) throw InputError(read_error);
@@ -196,10 +200,12 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
 }
 
 [[noreturn]] void run_child(const std::string& mesh_path, const std::vector<Options>& options,
-                            const std::vector<std::string>& methods, const Layout& out,
-                            int threads) {
+                            const std::vector<std::string>& methods, const std::vector<char>& run,
+                            const Layout& out, int threads) {
   const std::string log = out.dir + "/logs/" + stem(mesh_path) + ".log";
-  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  // Configs kept from an earlier run keep their part of the log.
+  const bool every = std::count(run.begin(), run.end(), 1) == std::ptrdiff_t(run.size());
+  const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | (every ? O_TRUNC : O_APPEND), 0644);
   if (fd >= 0) {
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);
@@ -209,7 +215,7 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
   set_progress_listener(nullptr);  // the parent's terminal is not the child's
   int code = 0;
   try {
-    run_shape(mesh_path, options, methods, out);
+    run_shape(mesh_path, options, methods, run, out);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     code = 1;
@@ -420,16 +426,23 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
     for (const auto& m : methods) rows.push_back(read_row_file(out.file(m, stem(mesh), ".row")));
     return rows;
   };
+  // Per shape, the configs to run: all, or with --skip_existing those without
+  // a row of status ok.
   std::vector<std::string> todo;
+  std::map<std::string, std::vector<char>> run;
   for (const auto& mesh : meshes) {
-    bool done = o.skip_existing;
-    for (const auto& row : rows_of(mesh)) done = done && row && row->status == "ok";
-    if (done) continue;
-    for (const auto& m : methods)
+    std::vector<char> configs;
+    for (const auto& row : rows_of(mesh))
+      configs.push_back(!(o.skip_existing && row && row->status == "ok"));
+    if (std::count(configs.begin(), configs.end(), 1) == 0) continue;
+    for (size_t k = 0; k < methods.size(); ++k) {
+      if (!configs[k]) continue;
       for (const char* suffix : {".row", ".off", ".on_input.off", ".json"})
-        fs::remove(out.file(m, stem(mesh), suffix), ec);
-    for (const auto& label : retrieval_labels(methods))
-      fs::remove(out.descriptor(label, stem(mesh)), ec);
+        fs::remove(out.file(methods[k], stem(mesh), suffix), ec);
+      fs::remove(out.descriptor(methods[k], stem(mesh)), ec);
+    }
+    fs::remove(out.descriptor("raw", stem(mesh)), ec);
+    run[mesh] = std::move(configs);
     todo.push_back(mesh);
   }
   if (!todo.empty()) fs::remove_all(out.blocks(), ec);  // rows of shapes about to change
@@ -457,7 +470,7 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
       std::fflush(nullptr);
       const pid_t pid = ::fork();
       if (pid < 0) throw NumericalError("fork failed for " + mesh);
-      if (pid == 0) run_child(mesh, options, methods, out, threads);
+      if (pid == 0) run_child(mesh, options, methods, run[mesh], out, threads);
       running[pid] = {mesh, std::chrono::steady_clock::now()};
     }
     show(finished);

@@ -35,7 +35,7 @@ struct BatchOptions {
   int shard_index = 0;                           ///< run shapes k with k % shard_count == index
   int shard_count = 1;         ///< > 1: no dataset-wide files (collect later); once every
                                ///< shape is done, the shard's block of the similarity matrices
-  bool skip_existing = false;  ///< keep shapes whose rows all exist with status ok
+  bool skip_existing = false;  ///< keep each shape's configs whose rows exist with status ok
   bool progress = false;       ///< a progress line on stderr (the caller knows it is a terminal)
   RetrievalOptions retrieval;
 };

@@ -1,7 +1,8 @@
 // unfold_batch on every input class with every method: failing shapes are
 // recorded with their error and the run goes on; every ok shape's files parse;
 // a batch interrupted (Ctrl-C) and resumed with --skip_existing writes the
-// same tables as one run straight through; --threads is checked, and a shape
+// same tables as one run straight through, and runs again only the configs
+// whose results are missing; --threads is checked, and a shape
 // below kMinParallelRows gives the same files on one thread as on two (what
 // scripts/slurm/submit's one thread a shape relies on, docs/reliability.md).
 #include <fcntl.h>
@@ -149,6 +150,15 @@ TEST(BatchMatrix, InterruptedThenResumedWithSkipExistingGivesTheSameTables) {
       "unfold_batch", "--input_dir " + in + " --output_dir " + out + args + " --skip_existing");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(fs::last_write_time(out + "/default/clean.off"), finished_before) << "not kept";
+  EXPECT_EQ(tables(out), tables(dir.file("straight")));
+
+  // One config's result gone: only that config runs again for the shape.
+  fs::remove(out + "/lsmds/clean.row");
+  const test::AppRun again = test::run_app(
+      "unfold_batch", "--input_dir " + in + " --output_dir " + out + args + " --skip_existing");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(fs::last_write_time(out + "/default/clean.off"), finished_before) << "not kept";
+  EXPECT_TRUE(fs::exists(out + "/lsmds/clean.row"));
   EXPECT_EQ(tables(out), tables(dir.file("straight")));
 }
 

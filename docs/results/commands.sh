@@ -12,16 +12,17 @@ for f in "$DATA"/tosca/*.off "$DATA"/faust/*.off; do ln -sf "$(realpath "$f")" "
 mkdir -p "$OUT/remeshed_dataset"
 for f in "$DATA"/faust_remeshed/*; do ln -sf "$(realpath "$f")" "$OUT/remeshed_dataset/"; done
 
+# --skip_existing: a run that was stopped goes on where it was; remove $OUT
+# (or a method's folders in it) after changing the code.
 # Every method at the paper's resolution (surfaces simplified to ~2,000 vertices).
-build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" \
+build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/2k" --skip_existing \
   --configs configs/paper.yaml,configs/default.yaml,configs/lsmds.yaml,configs/dpmu.yaml,configs/scf.yaml \
   --target_vertices 2000 --jobs 2
 # Ours at full resolution: the paper's method, the integrated rotation field on
 # the input's tets and the default (docs/method.md: pose invariance, contact,
 # meshing), and the SCF, LSMDS and DPMU baselines (docs/baselines.md); pose
 # pictures poses_<class>_<method>.png. DPMU alone takes about an hour here
-# (two jobs): --skip_existing lets a run that was stopped go on where it was;
-# start from an empty $OUT after changing the code.
+# (two jobs).
 build/bin/unfold_batch --input_dir "$OUT/dataset" --output_dir "$OUT/full" --skip_existing \
   --configs configs/paper.yaml,configs/invariant.yaml,configs/default.yaml,configs/scf.yaml,configs/lsmds.yaml,configs/dpmu.yaml --jobs 2
 build/bin/unfold_batch --input_dir "$OUT/remeshed_dataset" --output_dir "$OUT/remeshed" --skip_existing \
