@@ -455,10 +455,18 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
     progress.set({"unfolding (" + std::to_string(running.size()) + " running)", "shapes", finished,
                   int(todo.size())});
   };
-  progress.print_line("unfold_batch: " + std::to_string(todo.size()) + " shapes to run (" +
-                          std::to_string(meshes.size() - todo.size()) + " kept), " +
-                          std::to_string(methods.size()) + " configs, " + std::to_string(o.jobs) +
-                          " jobs",
+  size_t results_to_run = 0;
+  for (const auto& [mesh, configs] : run)
+    results_to_run += size_t(std::count(configs.begin(), configs.end(), 1));
+  // "22 shapes to run (0 kept; 88 of their 110 results kept), ..." when
+  // --skip_existing keeps some configs of the shapes it runs.
+  std::string kept = std::to_string(meshes.size() - todo.size()) + " kept";
+  if (results_to_run < todo.size() * methods.size())
+    kept += "; " + std::to_string(todo.size() * methods.size() - results_to_run) + " of their " +
+            std::to_string(todo.size() * methods.size()) + " results kept";
+  progress.print_line("unfold_batch: " + std::to_string(todo.size()) + " shapes to run (" + kept +
+                          "), " + std::to_string(methods.size()) + " configs, " +
+                          std::to_string(o.jobs) + " jobs",
                       stdout);
   size_t next = 0;
   int finished = 0;
