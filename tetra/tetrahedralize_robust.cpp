@@ -312,9 +312,23 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
   for (int v = 0; v < int(V.rows()); ++v)
     num_components += used[size_t(v)] && components.find(v) == v;
   if (num_components > 1) {
+    // Only a carved tet with a vertex outside the largest component (or in no
+    // kept tet) can ever join two: the others' vertices stay in the one
+    // component that holds the largest. Ranking just those picks the same tets
+    // and spares the accurate w of the rest (david0: 24 components, 223k
+    // carved tets).
+    std::vector<int> size(V.rows(), 0);
+    for (int v = 0; v < int(V.rows()); ++v)
+      if (used[size_t(v)]) ++size[size_t(components.find(v))];
+    const int largest = int(std::max_element(size.begin(), size.end()) - size.begin());
     std::vector<int> carved;
-    for (int t = 0; t < num_delaunay; ++t)
-      if (!keep[size_t(t)] && !degenerate[size_t(t)]) carved.push_back(t);
+    for (int t = 0; t < num_delaunay; ++t) {
+      if (keep[size_t(t)] || degenerate[size_t(t)]) continue;
+      bool apart = false;
+      for (int c = 0; c < 4 && !apart; ++c)
+        apart = !used[size_t(T(t, c))] || components.find(T(t, c)) != largest;
+      if (apart) carved.push_back(t);
+    }
     make_accurate(carved);
     std::stable_sort(carved.begin(), carved.end(), [&](int s, int t) { return w(s) > w(t); });
     for (size_t k = 0; k < carved.size() && num_components > 1; ++k) {
