@@ -428,13 +428,15 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
   };
   // Per shape, the configs to run: all, or with --skip_existing those without
   // a row of status ok.
-  std::vector<std::string> todo;
-  std::map<std::string, std::vector<char>> run;
+  std::vector<std::pair<std::string, std::vector<char>>> todo;
+  size_t results_to_run = 0;
   for (const auto& mesh : meshes) {
     std::vector<char> configs;
     for (const auto& row : rows_of(mesh))
       configs.push_back(!(o.skip_existing && row && row->status == "ok"));
-    if (std::count(configs.begin(), configs.end(), 1) == 0) continue;
+    const auto to_run = size_t(std::count(configs.begin(), configs.end(), 1));
+    if (to_run == 0) continue;
+    results_to_run += to_run;
     for (size_t k = 0; k < methods.size(); ++k) {
       if (!configs[k]) continue;
       for (const char* suffix : {".row", ".off", ".on_input.off", ".json"})
@@ -442,8 +444,7 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
       fs::remove(out.descriptor(methods[k], stem(mesh)), ec);
     }
     fs::remove(out.descriptor("raw", stem(mesh)), ec);
-    run[mesh] = std::move(configs);
-    todo.push_back(mesh);
+    todo.emplace_back(mesh, std::move(configs));
   }
   if (!todo.empty()) fs::remove_all(out.blocks(), ec);  // rows of shapes about to change
 
@@ -455,9 +456,6 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
     progress.set({"unfolding (" + std::to_string(running.size()) + " running)", "shapes", finished,
                   int(todo.size())});
   };
-  size_t results_to_run = 0;
-  for (const auto& [mesh, configs] : run)
-    results_to_run += size_t(std::count(configs.begin(), configs.end(), 1));
   // "22 shapes to run (0 kept; 88 of their 110 results kept), ..." when
   // --skip_existing keeps some configs of the shapes it runs.
   std::string kept = std::to_string(meshes.size() - todo.size()) + " kept";
@@ -472,13 +470,13 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
   int finished = 0;
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && int(running.size()) < o.jobs) {
-      const std::string& mesh = todo[next++];
+      const auto& [mesh, configs] = todo[next++];
       const int threads =
           options.front().threads > 0 ? options.front().threads : std::max(1, cores / o.jobs);
       std::fflush(nullptr);
       const pid_t pid = ::fork();
       if (pid < 0) throw NumericalError("fork failed for " + mesh);
-      if (pid == 0) run_child(mesh, options, methods, run[mesh], out, threads);
+      if (pid == 0) run_child(mesh, options, methods, configs, out, threads);
       running[pid] = {mesh, std::chrono::steady_clock::now()};
     }
     show(finished);
