@@ -62,7 +62,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                         {"shape", r.tet_report.shape},
                                         {"inverted_rest_tets", r.tet_report.inverted_rest_tets},
                                         {"contact_face_pairs", r.tet_report.contact_face_pairs},
-                                        {"contact_tets", r.tet_report.contact_tets},
+                                        {"contact_bridge", r.tet_report.contact_bridge},
                                         {"seconds", r.tet_report.seconds}}},
       {"seconds_tetrahedralize", r.tet_report.seconds},
       {"seconds_prepare", r.seconds_prepare},

@@ -446,20 +446,21 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
                                               &result.warnings);
     sort_interior_vertices(&result.tets);
   }
-  int contact_tets = 0;
+  bool contact_bridge = false;
   if (contact_check && !on_unfolded && result.tets.T.rows() > 0) {
     const auto start = std::chrono::steady_clock::now();
-    contact_tets =
-        int(tets_bridging_contact(result.surface, result.tets, options.contact_geodesic).size());
-    on_unfolded = contact_tets > 0;
+    contact_bridge =
+        some_tet_bridges_contact(result.surface, result.tets, options.contact_geodesic);
+    on_unfolded = contact_bridge;
     result.seconds_contact += seconds_since(start);
-    LOG(INFO) << contact_tets << " of the input's tets bridge a contact (" << seconds_since(start)
-              << " s): tetrahedralizing " << (on_unfolded ? "the unfolded shape" : "the input");
+    LOG(INFO) << (contact_bridge ? "some" : "none") << " of the input's tets bridge a contact ("
+              << seconds_since(start) << " s): tetrahedralizing "
+              << (on_unfolded ? "the unfolded shape" : "the input");
   }
   if (on_unfolded) {
     solve_on_unfolded_tets(options, solved, &result);
     result.tet_report.contact_face_pairs = prepared.tet_report.contact_face_pairs;
-    result.tet_report.contact_tets = contact_tets;
+    result.tet_report.contact_bridge = contact_bridge;
   }
   const EdgeGraph graph = build_edge_graph(
       int(result.tets.V.rows()), result.tets.T.rows() > 0

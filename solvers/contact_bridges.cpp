@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -144,9 +145,11 @@ double greedy_path_length(const EdgeGraph& graph, const Eigen::MatrixX3d& P, int
 // across a contact joins points that only a long way along the surface
 // connects. A greedy path within the bound proves nearly every pair no
 // bridge; the others (bridges, pairs round a concave part) take A*, which
-// explores the whole bound only for a bridge.
+// explores the whole bound only for a bridge. With `first_only`, the pairs
+// after the first bridge (in edge order) are left unmeasured: the answer to
+// "is there one" at the cost of the first, the same whatever the threads do.
 std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_graph,
-                               const Eigen::MatrixX3d& P, double geodesic) {
+                               const Eigen::MatrixX3d& P, double geodesic, bool first_only) {
   const int ns = int(surface.V.rows());
   const Eigen::MatrixX3i F = triangulate_faces(surface);
   const EdgeGraph graph = build_edge_graph(ns, Eigen::MatrixXi(F));
@@ -165,11 +168,13 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
     pairs.push_back({a, b, e});
   }
   std::vector<char> bridge(size_t(tet_graph.num_edges()), 0);
+  std::atomic<size_t> first_bridge = pairs.size();
 #pragma omp parallel if (ns >= kMinParallelRows)
   {
     BoundedSearch search(graph, P);
 #pragma omp for schedule(dynamic, 256)
     for (size_t k = 0; k < pairs.size(); ++k) {
+      if (first_only && k > first_bridge.load(std::memory_order_relaxed)) continue;
       const auto [i, j, e] = pairs[k];
       const double bound = std::max(reach, kDetour * (P.row(i) - P.row(j)).norm());
       if (greedy_path_length(graph, P, i, j, bound) <= bound) continue;
@@ -178,10 +183,21 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
           &i, 1, bound, [&](int v) { return (P.row(v) - goal).norm(); },
           [j = j](int v) { return v != j; });
       // unsettled, j is beyond the bound, or its tentative distance bounds it
-      if (search.distance(j) > bound) bridge[size_t(e)] = 1;
+      if (!(search.distance(j) > bound)) continue;
+      bridge[size_t(e)] = 1;
+      size_t seen = first_bridge.load();  // lowered to k unless a lower one came first
+      while (k < seen && !first_bridge.compare_exchange_weak(seen, k)) {
+      }
     }
   }
   return bridge;
+}
+
+void check_surface_of(const SurfaceMesh& surface, const TetMesh& tets, const char* who) {
+  if (surface.V.rows() != tets.num_surface_vertices)
+    throw UsageError(std::string(who) + ": " + std::to_string(surface.V.rows()) +
+                     " surface vertices for a tet mesh with " +
+                     std::to_string(tets.num_surface_vertices));
 }
 
 void check_geodesic(double geodesic, const char* who) {
@@ -193,14 +209,11 @@ void check_geodesic(double geodesic, const char* who) {
 
 std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh& tets,
                                        double geodesic) {
-  const int ns = tets.num_surface_vertices;
-  if (surface.V.rows() != ns)
-    throw UsageError("tets_bridging_contact: " + std::to_string(surface.V.rows()) +
-                     " surface vertices for a tet mesh with " + std::to_string(ns));
+  check_surface_of(surface, tets, "tets_bridging_contact");
   check_geodesic(geodesic, "tets_bridging_contact");
   report_stage("looking for tets that bridge a contact");
   const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
-  const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic);
+  const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic, false);
   std::vector<int> out;
   for (int t = 0; t < tets.T.rows(); ++t)
     for (const auto& [a, b] : kTetEdges) {
@@ -215,6 +228,15 @@ std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh
       }
     }
   return out;
+}
+
+bool some_tet_bridges_contact(const SurfaceMesh& surface, const TetMesh& tets, double geodesic) {
+  check_surface_of(surface, tets, "some_tet_bridges_contact");
+  check_geodesic(geodesic, "some_tet_bridges_contact");
+  report_stage("looking for a tet that bridges a contact");
+  const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
+  const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic, true);
+  return std::find(bridge.begin(), bridge.end(), 1) != bridge.end();
 }
 
 int count_intersections_far_along_surface(const SurfaceMesh& surface,

@@ -63,6 +63,25 @@ TEST(ContactBridges, FindsTheTetsJoiningCrossedLegs) {
   EXPECT_GE(on_legs, 0.9 * double(found.size()));
 }
 
+// Stopping at the first bridge answers as listing them all does: on the poses
+// without contact, on both contact poses, and at a reach so long that a pose
+// with contact has none left.
+TEST(ContactBridges, StoppingAtTheFirstBridgeAnswersAsListingThemAll) {
+  std::vector<ShapePose> poses = {ShapePose::rest(), ShapePose::preset(1)};
+  for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
+  int with_contact = 0;
+  for (const ShapePose& pose : poses) {
+    const SurfaceMesh shape = make_articulated_shape(pose);
+    const TetMesh tets = tetrahedralize(shape, TetOptions{});
+    for (const double reach : {0.1, 10.0}) {
+      const bool listed = !tets_bridging_contact(shape, tets, reach).empty();
+      EXPECT_EQ(some_tet_bridges_contact(shape, tets, reach), listed) << "reach " << reach;
+      with_contact += listed;
+    }
+  }
+  EXPECT_EQ(with_contact, ShapePose::num_contact_poses()) << "only the contact poses, at 0.1";
+}
+
 std::vector<std::pair<int, int>> intersections(const SurfaceMesh& surface) {
   return intersecting_face_pairs(surface.V, triangulate_faces(surface));
 }
@@ -117,6 +136,8 @@ TEST(ContactBridges, RefusesBadArguments) {
   const TetMesh tets = tetrahedralize(shape, TetOptions{});
   EXPECT_THROW(tets_bridging_contact(shape, tets, 0), UsageError);
   EXPECT_THROW(tets_bridging_contact(test::octahedron(), tets, 0.1), UsageError);
+  EXPECT_THROW(some_tet_bridges_contact(shape, tets, -1), UsageError);
+  EXPECT_THROW(some_tet_bridges_contact(test::octahedron(), tets, 0.1), UsageError);
   EXPECT_THROW(count_intersections_far_along_surface(shape, {}, 0), UsageError);
   const int faces = int(triangulate_faces(shape).rows());
   EXPECT_THROW(count_intersections_far_along_surface(shape, {{0, faces}}, 0.1), UsageError);

@@ -46,9 +46,10 @@ struct TetReport {
   /// through each other (solvers/contact_bridges.h); when there are any, shape
   /// is "unfolded" and the input's tets are neither made nor checked
   int contact_face_pairs = 0;
-  /// shape auto: the input's tets found bridging a contact
-  /// (solvers/contact_bridges.h); shape is "unfolded" when there are any
-  int contact_tets = 0;
+  /// shape auto: some tet of the input bridges a contact
+  /// (solvers/contact_bridges.h), so shape is "unfolded"; false also when
+  /// the input's tets were not checked
+  bool contact_bridge = false;
 };
 
 /// Tetrahedralizes a closed surface.
