@@ -227,13 +227,25 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options,
   result.seconds_interior = seconds_since(interior_start);
 }
 
+// The integration's anchor unit (integrate_cascade_rotations).
+double surface_lambda2(const SurfaceMesh& surface) {
+  return fiedler_value(graph_laplacian(
+      build_edge_graph(int(surface.V.rows()), Eigen::MatrixXi(triangulate_faces(surface)))));
+}
+
 // tetrahedralize.shape: unfolded. The surface solve S first, then the tet mesh
 // of S, its interior put back into the input (solvers/tetrahedralize_unfolded.h):
 // parts that touch in the input are joined by no tet. The result's tets become
-// that mesh, and the cascade's positions S's own tet mesh.
-void solve_on_unfolded_tets(const Options& options, const UnfoldResult* solved, UnfoldResult* out) {
+// that mesh, and the cascade's positions S's own tet mesh. With `integrates`,
+// returns surface_lambda2 computed meanwhile (on one thread: the tets' Delaunay
+// runs in TetGen's process and leaves a core idle); else no future.
+std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldResult* solved,
+                                           bool integrates, UnfoldResult* out) {
   UnfoldResult& result = *out;
   surface_cascade(options, solved, out);
+  std::future<double> lambda2;
+  if (integrates && kForkAlongsideThreads)
+    lambda2 = std::async(std::launch::async, [&result] { return surface_lambda2(result.surface); });
   const auto start = std::chrono::steady_clock::now();
   // auto takes the robust route for the unfolded shape, as the input's route
   // is the user's: the unfolded shape may or may not intersect itself
@@ -250,18 +262,18 @@ void solve_on_unfolded_tets(const Options& options, const UnfoldResult* solved, 
             << "): " << result.tets.V.rows() << " vertices, " << result.tets.T.rows() << " tets in "
             << result.tet_report.seconds << " s, " << result.tet_report.inverted_rest_tets
             << " inverted at rest";
+  return lambda2;
 }
 
 // integrate: the cascade's rotation field integrated on the whole tet mesh
 // (docs/method.md, pose invariance). The anchor's unit is lambda_2 of the
 // surface's uniform graph Laplacian: it depends on the connectivity alone, so
 // it is the same for every pose of a shape (the tet mesh's is not) and for
-// every arap.weight and arap.weights (the cascade's lambda_2 is not).
-void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options,
+// every arap.weight and arap.weights (the cascade's lambda_2 is not):
+// `lambda2` is surface_lambda2(result.surface).
+void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options, double lambda2,
                                  UnfoldResult* out) {
   UnfoldResult& result = *out;
-  const double lambda2 = fiedler_value(graph_laplacian(build_edge_graph(
-      int(result.surface.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)))));
   CascadeResult& c = result.cascade;
   IntegrateTimes times;
   c.positions = integrate_rotation_field(graph, result.tets.V, c.positions, lambda2,
@@ -457,8 +469,13 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
               << seconds_since(start) << " s): tetrahedralizing "
               << (on_unfolded ? "the unfolded shape" : "the input");
   }
+  // The rotation integration belongs to the cascade methods: LSMDS has no
+  // rotations to integrate, SCF's ARAP refinement is its own.
+  const bool integrates =
+      options.integrate.iterations > 0 && options.method != "scf" && options.method != "lsmds";
+  std::future<double> lambda2;
   if (on_unfolded) {
-    solve_on_unfolded_tets(options, solved, &result);
+    lambda2 = solve_on_unfolded_tets(options, solved, integrates, &result);
     result.tet_report.contact_face_pairs = prepared.tet_report.contact_face_pairs;
     result.tet_report.contact_bridge = contact_bridge;
   }
@@ -480,10 +497,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   } else {
     solve_cascade(graph, result.tets, options, &result);
   }
-  // The rotation integration belongs to the cascade methods: LSMDS has no
-  // rotations to integrate, SCF's ARAP refinement is its own.
-  if (options.integrate.iterations > 0 && options.method != "scf" && options.method != "lsmds")
-    integrate_cascade_rotations(graph, options, &result);
+  if (integrates)
+    integrate_cascade_rotations(
+        graph, options, lambda2.valid() ? lambda2.get() : surface_lambda2(result.surface), &result);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
