@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/QR>
 
 namespace unfold {
 
@@ -18,10 +19,10 @@ class AndersonAcceleration {
   /// The accelerated successor of x, given g = G(x): g itself on the first
   /// call after construction or reset(), then g - dG gamma with gamma the
   /// least-squares fit of the residual f = g - x by the last residual
-  /// differences dF. gamma solves the normal equations dF^T dF gamma = dF^T f
-  /// (window x window, complete orthogonal decomposition, so repeated steps do
-  /// no harm), whose matrix gains one row and column a step: O(n window) a
-  /// step, where a QR of dF would cost O(n window^2) and its copies.
+  /// differences dF (rank-revealing QR, so repeated steps do no harm). The
+  /// differences and the QR keep their storage from step to step: at a
+  /// million unknowns a fresh n x window matrix a step costs more in page
+  /// faults than the QR itself.
   Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& g);
 
   /// Forgets the past steps (e.g. after an extrapolation was rejected).
@@ -30,10 +31,10 @@ class AndersonAcceleration {
  private:
   int window_;
   bool has_last_ = false;
-  int count_ = 0;    // columns of dF_, dG_ in use: the first count_
-  int newest_ = -1;  // the newest one's column (they are a ring)
+  int count_ = 0;  // columns of dF_, dG_ in use, oldest first
   Eigen::VectorXd f_, last_f_, last_g_;
-  Eigen::MatrixXd dF_, dG_, gram_;  // n x window, n x window, dF_^T dF_
+  Eigen::MatrixXd dF_, dG_;  // n x window
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr_;
 };
 
 }  // namespace unfold
