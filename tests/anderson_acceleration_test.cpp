@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <deque>
 
 #include "solvers/cascade.h"
 #include "solvers/local_global.h"
@@ -36,6 +37,46 @@ TEST(AndersonAcceleration, SolvesASlowLinearIterationInAFewSteps) {
   EXPECT_GT((plain - fixed).norm(), 0.5 * fixed.norm());
   anderson.reset();  // after a reset the first step is the plain one
   EXPECT_EQ(anderson.next(plain, G(plain)), G(plain));
+}
+
+// The window slides: once it is full each step drops the oldest difference.
+// Every step equals the fit written out afresh (the last `window` differences,
+// oldest first, a new QR), bit for bit, across the slide and a reset.
+TEST(AndersonAcceleration, EachStepIsTheFitOfTheLastWindowOfDifferences) {
+  const int n = 7, window = 3;
+  const auto G = [](const Eigen::VectorXd& x) -> Eigen::VectorXd {
+    return (0.8 * x.array().sin() + 0.3).matrix();
+  };
+  AndersonAcceleration anderson(window);
+  std::deque<Eigen::VectorXd> dF, dG;
+  Eigen::VectorXd last_f, last_g;
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(n, -1, 2);
+  for (int k = 0; k < 10; ++k) {
+    if (k == 6) {  // a reset forgets the differences
+      anderson.reset();
+      dF.clear();
+      dG.clear();
+      last_f.resize(0);
+    }
+    const Eigen::VectorXd g = G(x), f = g - x;
+    if (last_f.size() == n) {
+      dF.push_back(f - last_f);
+      dG.push_back(g - last_g);
+      if (int(dF.size()) > window) dF.pop_front(), dG.pop_front();
+    }
+    last_f = f;
+    last_g = g;
+    Eigen::VectorXd expected = g;
+    if (!dF.empty()) {
+      Eigen::MatrixXd F(n, Eigen::Index(dF.size())), D(n, F.cols());
+      for (Eigen::Index c = 0; c < F.cols(); ++c)
+        F.col(c) = dF[size_t(c)], D.col(c) = dG[size_t(c)];
+      expected = g - D * F.colPivHouseholderQr().solve(f);
+    }
+    const Eigen::VectorXd next = anderson.next(x, g);
+    ASSERT_EQ(next, expected) << "step " << k;
+    x = next;
+  }
 }
 
 // A bar bent into a half circle: unfolding must straighten it, the slow,
