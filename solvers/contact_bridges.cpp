@@ -193,27 +193,37 @@ std::vector<char> bridge_edges(const SurfaceMesh& surface, const EdgeGraph& tet_
   return bridge;
 }
 
-void check_surface_of(const SurfaceMesh& surface, const TetMesh& tets, const char* who) {
+void check_geodesic(double geodesic, const char* who) {
+  if (!(geodesic > 0) || !std::isfinite(geodesic))
+    throw UsageError(std::string(who) + ": the geodesic bound must be a positive number");
+}
+
+// The tets' edge graph and which of its edges bridge a contact (bridge_edges),
+// the arguments checked first for `who`.
+struct TetBridges {
+  EdgeGraph graph;
+  std::vector<char> bridge;  // per edge of graph
+};
+
+TetBridges tet_bridges(const SurfaceMesh& surface, const TetMesh& tets, double geodesic,
+                       bool first_only, const char* who) {
   if (surface.V.rows() != tets.num_surface_vertices)
     throw UsageError(std::string(who) + ": " + std::to_string(surface.V.rows()) +
                      " surface vertices for a tet mesh with " +
                      std::to_string(tets.num_surface_vertices));
-}
-
-void check_geodesic(double geodesic, const char* who) {
-  if (!(geodesic > 0) || !std::isfinite(geodesic))
-    throw UsageError(std::string(who) + ": the geodesic bound must be a positive number");
+  check_geodesic(geodesic, who);
+  report_stage(first_only ? "looking for a tet that bridges a contact"
+                          : "looking for tets that bridge a contact");
+  TetBridges out{build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T)), {}};
+  out.bridge = bridge_edges(surface, out.graph, tets.V, geodesic, first_only);
+  return out;
 }
 
 }  // namespace
 
 std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh& tets,
                                        double geodesic) {
-  check_surface_of(surface, tets, "tets_bridging_contact");
-  check_geodesic(geodesic, "tets_bridging_contact");
-  report_stage("looking for tets that bridge a contact");
-  const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
-  const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic, false);
+  const auto [graph, bridge] = tet_bridges(surface, tets, geodesic, false, "tets_bridging_contact");
   std::vector<int> out;
   for (int t = 0; t < tets.T.rows(); ++t)
     for (const auto& [a, b] : kTetEdges) {
@@ -231,11 +241,8 @@ std::vector<int> tets_bridging_contact(const SurfaceMesh& surface, const TetMesh
 }
 
 bool some_tet_bridges_contact(const SurfaceMesh& surface, const TetMesh& tets, double geodesic) {
-  check_surface_of(surface, tets, "some_tet_bridges_contact");
-  check_geodesic(geodesic, "some_tet_bridges_contact");
-  report_stage("looking for a tet that bridges a contact");
-  const EdgeGraph graph = build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
-  const std::vector<char> bridge = bridge_edges(surface, graph, tets.V, geodesic, true);
+  const std::vector<char> bridge =
+      tet_bridges(surface, tets, geodesic, true, "some_tet_bridges_contact").bridge;
   return std::find(bridge.begin(), bridge.end(), 1) != bridge.end();
 }
 
