@@ -260,8 +260,9 @@ std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldR
   result.unfolded_tet_positions = std::move(unfolded.unfolded);
   LOG(INFO) << "tetrahedralized the unfolded shape (" << result.tet_report.route
             << "): " << result.tets.V.rows() << " vertices, " << result.tets.T.rows() << " tets in "
-            << result.tet_report.seconds << " s, " << result.tet_report.inverted_rest_tets
-            << " inverted at rest";
+            << result.tet_report.seconds << " s; " << result.tet_report.dropped_inverted_tets
+            << " inverted at rest dropped, " << result.tet_report.inverted_rest_tets
+            << " kept to keep it connected";
   return lambda2;
 }
 

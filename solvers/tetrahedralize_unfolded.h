@@ -23,11 +23,13 @@ namespace unfold {
 struct UnfoldedTetMesh {
   TetMesh rest;               ///< S's tets, the input's surface, the interior placed into it
   Eigen::MatrixX3d unfolded;  ///< positions of rest's vertices in S (S's own tet mesh)
-  TetReport report;           ///< S's tetrahedralization, shape "unfolded", inverted_rest_tets
+  /// S's tetrahedralization, shape "unfolded", dropped_inverted_tets, inverted_rest_tets
+  TetReport report;
 };
 
 /// Tetrahedralizes the unfolded surface S and places its interior vertices
-/// into the input surface.
+/// into the input surface; the tets inverted there are dropped, but for those
+/// that keep the mesh connected (drop_inverted_tets).
 /// @param input   the input surface (rest positions of the surface vertices)
 /// @param S       unfolded positions of the input's vertices (rows of input.V)
 /// @param options how S is tetrahedralized (route, quality)

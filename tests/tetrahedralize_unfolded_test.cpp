@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "mesh/tet_volumes.h"
 #include "shapes/articulated_shape.h"
 #include "test_meshes.h"
 
@@ -30,6 +31,7 @@ TEST(TetrahedralizeUnfolded, TakesASimilarityBackExactly) {
   EXPECT_LT((m.rest.V - back).cwiseAbs().maxCoeff(), 1e-6);
   EXPECT_EQ(m.report.shape, "unfolded");
   EXPECT_EQ(m.report.inverted_rest_tets, 0);
+  EXPECT_EQ(m.report.dropped_inverted_tets, 0);
 }
 
 // Two poses of the demo animal whose legs pass through each other: a tet mesh
@@ -61,6 +63,9 @@ TEST(TetrahedralizeUnfolded, JoinsNoPartsThatOnlyTouchInTheInput) {
   const UnfoldedTetMesh m = tetrahedralize_unfolded(crossed, apart.V, TetOptions{});
   EXPECT_EQ(joins_legs(m.rest.T), 0);
   EXPECT_TRUE(m.rest.V.allFinite());
+  // The report counts the tets left and the inverted ones among them.
+  EXPECT_EQ(m.report.num_tets, m.rest.T.rows());
+  EXPECT_EQ(count_inverted_tets(m.unfolded, m.rest.V, m.rest.T), m.report.inverted_rest_tets);
 }
 
 TEST(TetrahedralizeUnfolded, RefusesAnUnfoldedShapeOfAnotherSize) {

@@ -40,7 +40,9 @@ struct TetReport {
   /// shape, solvers/tetrahedralize_unfolded.h, which also fills the next field)
   std::string shape = "input";
   /// unfolded: tets whose orientation at rest (put back into the input) is not
-  /// the one they were made with
+  /// the one they were made with, dropped (mesh/drop_inverted_tets.h)
+  int dropped_inverted_tets = 0;
+  /// unfolded: such tets kept, as the mesh needs them to stay connected
   int inverted_rest_tets = 0;
   /// shape auto: the surface's intersecting face pairs that are parts passing
   /// through each other (solvers/contact_bridges.h); when there are any, shape

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/union_find.h"
 #include "mesh/edge_graph.h"
 #include "mesh/position_order.h"
 #include "tetra/fast_winding_number.h"
@@ -128,16 +129,6 @@ double lap(std::chrono::steady_clock::time_point* start) {
   *start = now;
   return seconds;
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(size_t(n)) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int i) {
-    while (parent[size_t(i)] != i) i = parent[size_t(i)] = parent[size_t(parent[size_t(i)])];
-    return i;
-  }
-  void unite(int a, int b) { parent[size_t(find(a))] = find(b); }
-};
 
 }  // namespace
 

@@ -1,0 +1,51 @@
+#include "mesh/drop_inverted_tets.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/errors.h"
+#include "core/union_find.h"
+#include "mesh/tet_volumes.h"
+
+namespace unfold {
+
+int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
+                       Eigen::MatrixX4i* T) {
+  const int n = int(made.rows());
+  if (rest.rows() != n)
+    throw UsageError("drop_inverted_tets: the two positions have " + std::to_string(n) + " and " +
+                     std::to_string(rest.rows()) + " rows");
+  if (T->size() > 0 && (T->minCoeff() < 0 || T->maxCoeff() >= n))
+    throw UsageError("drop_inverted_tets: a tet corner is not one of the " + std::to_string(n) +
+                     " vertices");
+  const Eigen::VectorXd before = tet_volumes(made, *T), after = tet_volumes(rest, *T);
+  std::vector<char> keep(size_t(T->rows()));
+  UnionFind parts(n);
+  for (Eigen::Index t = 0; t < T->rows(); ++t) {
+    keep[size_t(t)] = !(before[t] * after[t] <= 0 && before[t] != 0);
+    if (keep[size_t(t)])
+      for (int k = 1; k < 4; ++k) parts.unite((*T)(t, 0), (*T)(t, k));
+  }
+  // The least inverted first (rest volume over made volume nearest zero):
+  // what must stay should be the tets nearest to having a rest shape.
+  std::vector<Eigen::Index> inverted;
+  for (Eigen::Index t = 0; t < T->rows(); ++t)
+    if (!keep[size_t(t)]) inverted.push_back(t);
+  const auto ratio = [&](Eigen::Index t) { return before[t] != 0 ? after[t] / before[t] : 0.0; };
+  std::stable_sort(inverted.begin(), inverted.end(),
+                   [&](Eigen::Index a, Eigen::Index b) { return ratio(a) > ratio(b); });
+  for (const Eigen::Index t : inverted) {
+    for (int k = 1; k < 4; ++k)
+      if (parts.find((*T)(t, 0)) != parts.find((*T)(t, k))) keep[size_t(t)] = 1;
+    if (keep[size_t(t)])
+      for (int k = 1; k < 4; ++k) parts.unite((*T)(t, 0), (*T)(t, k));
+  }
+  Eigen::Index rows = 0;
+  for (Eigen::Index t = 0; t < T->rows(); ++t)
+    if (keep[size_t(t)]) T->row(rows++) = T->row(t);
+  const int dropped = int(T->rows() - rows);
+  T->conservativeResize(rows, 4);
+  return dropped;
+}
+
+}  // namespace unfold

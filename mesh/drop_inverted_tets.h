@@ -1,0 +1,26 @@
+// Tets that are inverted in the positions a mesh is used at, dropped. A tet
+// mesh made on one shape and then given other rest positions (the unfolded
+// shape's tets put back into the input, solvers/tetrahedralize_unfolded.h)
+// has flat tets across the surface that turn inside out there: they have no
+// rest shape to keep, and their edges pull the solve and the rigidity error
+// towards nothing (docs/method.md, contact).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace unfold {
+
+/// Removes the rows of T whose signed volume at `rest` does not have the sign
+/// it has at `made` (count_inverted_tets' test), except those that joining
+/// the rest needs: an inverted tet is put back, in row order, when it joins
+/// vertices the kept tets leave in different parts, so that the vertices stay
+/// as connected as T had them (every vertex of T in some kept tet).
+/// @param made positions T was made at (rows: vertices)
+/// @param rest positions T is used at, the same size
+/// @param T    tets (rows of corner indices), changed in place; the kept rows in order
+/// @return how many tets were dropped
+/// @throws UsageError if the positions' sizes differ or a corner is out of range
+int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
+                       Eigen::MatrixX4i* T);
+
+}  // namespace unfold
