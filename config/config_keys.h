@@ -42,6 +42,9 @@
     "ones keep the integrated pose)")                                                              \
   X(integrate_tolerance, "integrate.tolerance", integrate.tolerance,                               \
     "integrate.iterations: stop when a step moves every vertex less than this times the radius")   \
+  X(integrate_weights, "integrate.weights", integrate.weights,                                     \
+    "integrate.iterations: edge weights of the steps: uniform, or inverse_length (a spring's "     \
+    "stiffness: a tet mesh's long chords do not stiffen its bending, docs/method.md)")             \
   X(beta_mode, "beta.mode", beta_mode,                                                             \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                            \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                               \

@@ -177,6 +177,7 @@ Options::Options() {
   cascade.break_in_band = false;
   cascade.anderson = 5;
   integrate.iterations = 60;
+  integrate.weights = "inverse_length";
   energy.stretch_masses = "lumped";
 }
 
@@ -260,6 +261,9 @@ void validate_options(const Options& o) {
   require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
           "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
+  require(o.integrate.weights == "uniform" || o.integrate.weights == "inverse_length",
+          "integrate.weights",
+          "must be uniform or inverse_length, got '" + o.integrate.weights + "'");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
   require(std::isfinite(o.integrate.tolerance) && o.integrate.tolerance >= 0, "integrate.tolerance",

@@ -2,7 +2,9 @@
 
 #include <glog/logging.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "core/errors.h"
@@ -15,6 +17,42 @@
 #include "solvers/sparse_ldlt.h"
 
 namespace unfold {
+namespace {
+
+// Per edge of the graph: 1, or mean length / rest length scaled to mean 1.
+std::vector<double> edge_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                 bool inverse_length) {
+  std::vector<double> w(size_t(graph.num_edges()), 1.0);
+  if (!inverse_length || graph.num_edges() == 0) return w;
+  double sum = 0;
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    // Coincident rest positions (a degenerate input) weigh as the shortest edge does.
+    w[size_t(e)] = 1 / std::max((P.row(graph.edges(e, 0)) - P.row(graph.edges(e, 1))).norm(),
+                                std::numeric_limits<double>::min());
+    sum += w[size_t(e)];
+  }
+  for (double& x : w) x *= graph.num_edges() / sum;
+  return w;
+}
+
+// The weighted graph Laplacian: L_ij = -w_ij, L_ii = sum_j w_ij.
+Eigen::SparseMatrix<double> weighted_laplacian(const EdgeGraph& graph,
+                                               const std::vector<double>& w) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(4 * size_t(graph.num_edges()));
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    const int a = graph.edges(e, 0), b = graph.edges(e, 1);
+    entries.emplace_back(a, a, w[size_t(e)]);
+    entries.emplace_back(b, b, w[size_t(e)]);
+    entries.emplace_back(a, b, -w[size_t(e)]);
+    entries.emplace_back(b, a, -w[size_t(e)]);
+  }
+  Eigen::SparseMatrix<double> L(graph.num_vertices, graph.num_vertices);
+  L.setFromTriplets(entries.begin(), entries.end());
+  return L;
+}
+
+}  // namespace
 
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
                             const ArapSolveOptions& options) {
@@ -29,7 +67,10 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
                (options.anchor > 0 ? ", anchored" : ""));
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
   // to held vertices go to the right side.
-  Eigen::SparseMatrix<double> L = graph_laplacian(graph).bottomRightCorner(m, m);
+  const std::vector<double> weights = edge_weights(graph, P, options.inverse_length_weights);
+  Eigen::SparseMatrix<double> L =
+      (options.inverse_length_weights ? weighted_laplacian(graph, weights) : graph_laplacian(graph))
+          .bottomRightCorner(m, m);
   if (options.anchor > 0) {
     Eigen::SparseMatrix<double> I(m, m);
     I.setIdentity();
@@ -51,7 +92,8 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   for (int i = num_fixed; i < n; ++i)
     for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
       if (graph.neighbors[size_t(k)] < num_fixed)
-        fixed_rhs.row(i - num_fixed) += Q.row(graph.neighbors[size_t(k)]);
+        fixed_rhs.row(i - num_fixed) +=
+            weights[size_t(graph.neighbor_edge[size_t(k)])] * Q.row(graph.neighbors[size_t(k)]);
   // The centroid first: inside the expression Eigen recomputes it per row
   // (O(n^2): 0.67 s at 33k vertices, per call).
   const Eigen::RowVector3d centroid = Q.colwise().mean();
@@ -69,12 +111,11 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     if (moves) active.push_back(i);
   }
   const int num_active = int(active.size());
-  const CellRestEdges rest =
-      cell_rest_edges(graph, P, std::vector<double>(size_t(graph.num_edges()), 1.0));
+  const CellRestEdges rest = cell_rest_edges(graph, P, weights);
 
-  // At X's best rotations R (per cell): B_i = sum_j (R_i + R_j)/2 (p_i - p_j), the
+  // At X's best rotations R (per cell): B_i = sum_j w_ij (R_i + R_j)/2 (p_i - p_j), the
   // right side's part that changes (free rows), and the energy the steps lower,
-  // 1/2 sum_i sum_{j in N_i} |x_i - x_j - R_i (p_i - p_j)|^2 + anchor |free rows - start|^2
+  // 1/2 sum_i sum_{j in N_i} w_ij |x_i - x_j - R_i (p_i - p_j)|^2 + anchor |free rows - start|^2
   // (the active cells' terms: the others are constant): the local step minimises it
   // over R, the global step over the free rows (its gradient is 2 (L x - B) +
   // 2 anchor (x - start)), so plain steps never raise it. Each fit starts its
@@ -104,10 +145,12 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       Eigen::RowVector3d b = Eigen::RowVector3d::Zero();
       for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
         const int j = graph.neighbors[size_t(k)];
-        const Eigen::Vector3d e = rest.weighted_edges.row(k).transpose();
+        const Eigen::Vector3d e = rest.weighted_edges.row(k).transpose();  // w_ij (p_i - p_j)
+        const double w = weights[size_t(graph.neighbor_edge[size_t(k)])];
         if (i >= num_fixed) b += (0.5 * (R[size_t(i)] + R[size_t(j)]) * e).transpose();
         energy +=
-            0.5 * (x_rows.row(i) - x_rows.row(j) - (R[size_t(i)] * e).transpose()).squaredNorm();
+            0.5 * w *
+            (x_rows.row(i) - x_rows.row(j) - (R[size_t(i)] * e / w).transpose()).squaredNorm();
       }
       if (i >= num_fixed) B.row(i - num_fixed) = b;
     }

@@ -25,10 +25,16 @@ struct ArapSolveOptions {
   /// Anderson acceleration window of the steps (0: plain steps). An
   /// extrapolated step is kept only if it lowers the energy.
   int anderson = 5;
+  /// Edge weights w_ij: false, uniform (1); true, inversely proportional to the
+  /// edge's rest length |p_i - p_j| (a spring's stiffness), scaled to mean 1.
+  /// A tet mesh's long chords then weigh no more than the short edges they
+  /// span, instead of dominating the stiffness of bending (docs/method.md).
+  bool inverse_length_weights = false;
 };
 
-/// Minimises the ARAP energy 1/2 sum_i sum_{j in N_i} |q_i - q_j - R_i (p_i - p_j)|^2
-/// (plus the anchor) over the free rows of Q by alternating best rotations R
+/// Minimises the ARAP energy 1/2 sum_i sum_{j in N_i} w_ij |q_i - q_j - R_i (p_i - p_j)|^2
+/// (plus the anchor; w_ij as options.inverse_length_weights) over the free rows of Q by
+/// alternating best rotations R
 /// (Kabsch, per vertex) and one sparse solve; returns Q with the free rows
 /// moved. Stops after max_iterations steps, when a plain step moves every free
 /// vertex by less than the tolerance, or when a plain step no longer lowers the

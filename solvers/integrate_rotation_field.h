@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 
 #include "mesh/edge_graph.h"
 
@@ -19,6 +20,9 @@ struct IntegrateOptions {
   /// stay where the integration put them
   double anchor = 20;
   double tolerance = 1e-4;  ///< the steps stop when they move less (relative to the radius)
+  /// edge weights of every step: "uniform" or "inverse_length" (ArapSolveOptions::
+  /// inverse_length_weights: long chords of a tet mesh do not stiffen its bending)
+  std::string weights = "uniform";
 };
 
 /// Where integrate_rotation_field spent its time (wall seconds).
@@ -37,7 +41,7 @@ struct IntegrateTimes {
 ///        of its surface's graph Laplacian, the same for every pose
 /// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0
 /// @param times   optional: the two parts' seconds
-/// @throws UsageError for mismatched sizes or negative options
+/// @throws UsageError for mismatched sizes, negative options or unknown weights
 Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                           const Eigen::MatrixX3d& Q, double lambda2,
                                           const IntegrateOptions& options,

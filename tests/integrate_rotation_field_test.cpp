@@ -86,6 +86,10 @@ TEST(IntegrateRotationField, RefusesBadOptions) {
   EXPECT_THROW(
       integrate_rotation_field(g.graph, g.mesh.V.topRows(5), g.mesh.V, g.lambda2, steps(2)),
       UsageError);
+  IntegrateOptions cotangent = steps(2);
+  cotangent.weights = "cotangent";
+  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, cotangent),
+               UsageError);
 }
 
 }  // namespace
