@@ -132,6 +132,15 @@ double anchored_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P, const 
          anchor * (Q.bottomRows(m) - start.bottomRows(m)).squaredNorm();
 }
 
+// One vertex held, anchored with weight 0.1, steps until they move less than 1e-9.
+ArapSolveOptions anchored_to_convergence() {
+  ArapSolveOptions options = held(1);
+  options.anchor = 0.1;
+  options.max_iterations = 5000;
+  options.tolerance = 1e-9;
+  return options;
+}
+
 // Anderson acceleration changes how the steps get there, not where: from a
 // bent, noisy grid, accelerated and plain steps end at the same shape, and
 // neither ends above the energy it started from.
@@ -139,10 +148,7 @@ TEST(ArapSolve, AcceleratedStepsEndWhereThePlainStepsDo) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
   const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
-  ArapSolveOptions options = held(1);
-  options.anchor = 0.1;
-  options.max_iterations = 5000;
-  options.tolerance = 1e-9;
+  ArapSolveOptions options = anchored_to_convergence();
   options.anderson = 0;
   const Eigen::MatrixX3d plain = arap_solve(graph, g.mesh.V, bent, options);
   options.anderson = 5;
@@ -195,10 +201,7 @@ TEST(ArapSolve, InverseLengthWeightsMinimiseTheirOwnEnergy) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
   const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
-  ArapSolveOptions options = held(1);
-  options.anchor = 0.1;
-  options.max_iterations = 5000;
-  options.tolerance = 1e-10;
+  ArapSolveOptions options = anchored_to_convergence();
   const Eigen::MatrixX3d uniform = arap_solve(graph, g.mesh.V, bent, options);
   options.inverse_length_weights = true;
   const Eigen::MatrixX3d weighted = arap_solve(graph, g.mesh.V, bent, options);
