@@ -12,7 +12,8 @@ namespace unfold {
 
 /// Removes the rows of T whose signed volume at `rest` does not have the sign
 /// it has at `made` (count_inverted_tets' test), except those that joining
-/// the rest needs: an inverted tet is put back, in row order, when it joins
+/// the rest needs: an inverted tet is put back, least inverted first (its volume
+/// ratio rest / made nearest zero; ties in row order), when it joins
 /// vertices the kept tets leave in different parts, so that the vertices stay
 /// as connected as T had them (every vertex of T in some kept tet).
 /// @param made positions T was made at (rows: vertices)

@@ -19,7 +19,7 @@
 namespace unfold {
 namespace {
 
-// Per edge of the graph: 1, or mean length / rest length scaled to mean 1.
+// Per edge of the graph: 1, or 1 / rest length scaled to mean 1.
 std::vector<double> edge_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                  bool inverse_length) {
   std::vector<double> w(size_t(graph.num_edges()), 1.0);
