@@ -41,11 +41,12 @@ DEFINE_string(input_copy, "", "also write the surface that was unfolded (e.g. th
 DEFINE_string(tet_input, "",
               "a tet mesh to unfold instead of tetrahedralizing (.vtu as --tet_output writes it, "
               "TetGen .node/.ele, Gmsh .msh, MEDIT .mesh; ASCII); its boundary is the surface, "
-              "or must be --input's");
+              "or it holds --input's vertices (a carved tet mesh: a warning)");
 DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (TetGen .node/.ele)");
 DEFINE_string(rest_tet_output, "",
               "the tet mesh the run unfolded, at rest (.vtu or .node): to keep, inspect, or give "
-              "back with --tet_input");
+              "back with --tet_input (by default the unfolded shape's tets put into the input; "
+              "given back, they unfold as with --tet_shape input)");
 DEFINE_string(skeleton_output, "",
               "method scf: the input's curve skeleton as line segments (.vtk or .ply)");
 DEFINE_string(canonical_skeleton_output, "",

@@ -22,10 +22,12 @@
     "edge graph with a warning instead of failing")                                                \
   X(tet_shape, "tetrahedralize.shape", tet_shape,                                                  \
     "domain: surface: tetrahedralize the input, or the surface solve's unfolded shape and put "    \
-    "its interior back into the input (unfolded: parts touching in the input stay apart), or "     \
-    "auto: unfolded where the input's tets bridge a contact, else input")                          \
+    "its interior back into the input (unfolded: parts touching in the input stay apart); auto: "  \
+    "unfolded wherever there is a surface solve and the route is not conforming, else input; "     \
+    "contact: unfolded where the input's tets bridge a contact, else input")                       \
   X(contact_geodesic, "tetrahedralize.contact_geodesic", contact_geodesic,                         \
-    "shape auto: a tet edge bridges a contact when its ends are farther apart along the surface "  \
+    "shape contact: a tet edge bridges a contact when its ends are farther apart along the "       \
+    "surface "                                                                                     \
     "than this times sqrt(area) and 4 times their distance (docs/method.md, contact)")             \
   X(components, "components", components,                                                          \
     "several connected components: refuse (error naming the count) or separately (each "           \

@@ -250,14 +250,16 @@ void validate_options(const Options& o) {
           "must be refuse or separately, got '" + o.components + "'");
   require(o.domain == "volume" || o.domain == "surface", "domain",
           "must be volume or surface, got '" + o.domain + "'");
-  require(o.tet_shape == "input" || o.tet_shape == "unfolded" || o.tet_shape == "auto",
-          "tetrahedralize.shape", "must be input, unfolded or auto, got '" + o.tet_shape + "'");
+  require(o.tet_shape == "input" || o.tet_shape == "unfolded" || o.tet_shape == "auto" ||
+              o.tet_shape == "contact",
+          "tetrahedralize.shape",
+          "must be input, unfolded, auto or contact, got '" + o.tet_shape + "'");
   require(
       o.tet_shape != "unfolded" ||
           (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
       "tetrahedralize.shape",
       "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method other "
-      "than lsmds and scf (auto falls back to the input's tets there)");
+      "than lsmds and scf (auto and contact fall back to the input's tets there)");
   require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
           "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
@@ -333,14 +335,24 @@ void validate_options(const Options& o) {
   validate_scf_options(o.scf);
 }
 
+namespace {
+
+// Whether the method solves on the surface first, whose unfolded shape a tet mesh can be made of.
+bool solves_surface_first(const Options& options) {
+  return options.domain == "surface" && options.method != "lsmds" && options.method != "scf";
+}
+
+}  // namespace
+
+// Route conforming with shape auto asks for TetGen's own tets of the input.
 bool tets_from_unfolded(const Options& options) {
-  return options.tet_shape == "unfolded" && options.domain == "surface" &&
-         options.method != "lsmds" && options.method != "scf";
+  return (options.tet_shape == "unfolded" ||
+          (options.tet_shape == "auto" && options.tet.route != "conforming")) &&
+         solves_surface_first(options);
 }
 
 bool tets_from_unfolded_on_contact(const Options& options) {
-  return options.tet_shape == "auto" && options.domain == "surface" && options.method != "lsmds" &&
-         options.method != "scf";
+  return options.tet_shape == "contact" && solves_surface_first(options);
 }
 
 bool computes_metric(const Options& options, const std::string& name) {

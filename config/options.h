@@ -37,10 +37,12 @@ struct Options {
   std::string components = "refuse";    ///< several components: "refuse" or "separately"
   std::string domain = "volume";        ///< "volume" (tet mesh, the paper's) or "surface"
   /// domain surface: the tet mesh of the "input" or of the surface solve ("unfolded",
-  /// which joins no parts that touch in the input; solvers/tetrahedralize_unfolded.h),
-  /// or "auto": unfolded where the input's tets bridge a contact, else input
+  /// which joins no parts that touch in the input; solvers/tetrahedralize_unfolded.h);
+  /// "auto": unfolded (robust route) wherever there is a surface solve and
+  /// tet.route is not conforming, else input;
+  /// "contact": unfolded (robust route) where the input's tets bridge a contact, else input
   std::string tet_shape = "input";
-  /// shape auto: a tet edge bridges a contact when its ends are farther apart
+  /// shape contact: a tet edge bridges a contact when its ends are farther apart
   /// along the surface than this times sqrt(area) (solvers/contact_bridges.h)
   double contact_geodesic = 0.05;
   std::string beta_mode = "relative";
@@ -83,11 +85,12 @@ void validate_options(const Options& options);
 bool computes_metric(const Options& options, const std::string& name);
 
 /// Whether the tet mesh is made from the surface solve's unfolded shape
-/// whatever the input (tetrahedralize.shape: unfolded with domain: surface).
+/// whatever the input (tetrahedralize.shape: unfolded, or auto with a route
+/// other than conforming; domain: surface and a method other than lsmds and scf).
 bool tets_from_unfolded(const Options& options);
 
 /// Whether the input's tets are made and then, if they bridge a contact, the
-/// unfolded shape's instead (tetrahedralize.shape: auto with domain: surface).
+/// unfolded shape's instead (tetrahedralize.shape: contact with domain: surface).
 bool tets_from_unfolded_on_contact(const Options& options);
 
 /// The options as a YAML document with every key (the effective configuration).

@@ -73,7 +73,7 @@ SurfaceMesh tet_mesh_boundary(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i&
 }
 
 Eigen::VectorXi match_tet_mesh_boundary(const SurfaceMesh& surface, const Eigen::MatrixX3d& V,
-                                        const Eigen::MatrixX4i& T) {
+                                        const Eigen::MatrixX4i& T, std::string* mismatch) {
   const auto faces = boundary_faces(V, T);
   std::map<std::tuple<double, double, double>, int> row_at;
   for (int v = 0; v < int(V.rows()); ++v)
@@ -96,12 +96,12 @@ Eigen::VectorXi match_tet_mesh_boundary(const SurfaceMesh& surface, const Eigen:
   }
   int extra = 0;
   for (const auto& [key, face] : faces) extra += !surface_faces.count(key);
+  mismatch->clear();
   if (unmatched > 0 || extra > 0)
-    throw InputError("the tet mesh's boundary is not the surface: " + std::to_string(unmatched) +
-                     " of the surface's " + std::to_string(F.rows()) +
-                     " triangles are not boundary triangles of the tet mesh, and " +
-                     std::to_string(extra) + " of its " + std::to_string(faces.size()) +
-                     " boundary triangles are not surface triangles");
+    *mismatch = std::to_string(unmatched) + " of the surface's " + std::to_string(F.rows()) +
+                " triangles are not boundary triangles of the tet mesh, and " +
+                std::to_string(extra) + " of its " + std::to_string(faces.size()) +
+                " boundary triangles are not surface triangles";
   return row;
 }
 

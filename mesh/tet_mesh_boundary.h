@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 
 #include "mesh/surface_mesh.h"
 
@@ -14,11 +15,14 @@ namespace unfold {
 /// @throws InputError if T is empty or an index is outside V
 SurfaceMesh tet_mesh_boundary(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T);
 
-/// The row of V that each surface vertex is (same position, exactly), after
-/// checking that the surface's triangles are the boundary triangles of T.
-/// @throws InputError naming the first surface vertex not in V, or how many
-///         triangles the surface and the boundary do not share
+/// The row of V that each surface vertex is (same position, exactly), and how
+/// far the surface's triangles are from the boundary triangles of T.
+/// @param mismatch set to "" when they are the same triangles, else to how many
+///        the surface and the boundary do not share (a carved tet mesh, such as
+///        the robust route's, has its surface's vertices but not always its
+///        triangles on its boundary)
+/// @throws InputError naming the first surface vertex not in V
 Eigen::VectorXi match_tet_mesh_boundary(const SurfaceMesh& surface, const Eigen::MatrixX3d& V,
-                                        const Eigen::MatrixX4i& T);
+                                        const Eigen::MatrixX4i& T, std::string* mismatch);
 
 }  // namespace unfold

@@ -19,10 +19,21 @@ PreparedMesh prepare_mesh_from_tets(const SurfaceMesh& surface, const Eigen::Mat
     throw UsageError(
         "simplify.target_vertices does not apply to a given tet mesh (it is used as "
         "it is); leave it 0");
+  if (options.tet_shape == "unfolded")
+    throw UsageError(
+        "tetrahedralize.shape: unfolded makes a tet mesh of the surface solve's shape instead of "
+        "the given one; leave it auto or input");
   PreparedMesh prepared;
   prepared.warnings = check_surface_mesh(surface, true).warnings;
   for (const auto& w : prepared.warnings) LOG(WARNING) << w;
-  const Eigen::VectorXi surface_row = match_tet_mesh_boundary(surface, V, T);
+  std::string mismatch;
+  const Eigen::VectorXi surface_row = match_tet_mesh_boundary(surface, V, T, &mismatch);
+  if (!mismatch.empty()) {
+    // A carved tet mesh (the robust route's, the default's --rest_tet_output)
+    // holds the surface's vertices without its every triangle on its boundary.
+    prepared.warnings.push_back("the tet mesh's boundary is not exactly the surface: " + mismatch);
+    LOG(WARNING) << prepared.warnings.back();
+  }
 
   // New row of each old one: the surface's first, the others after them in order.
   const int n = int(V.rows()), ns = int(surface.V.rows());

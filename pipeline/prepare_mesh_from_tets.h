@@ -16,10 +16,13 @@ namespace unfold {
 /// its order, then the interior ones (sort_interior_vertices). The tet report's
 /// route is "given".
 /// @param surface  the surface (e.g. tet_mesh_boundary(V, T)); checked as prepare_mesh does
-/// @throws InputError if the surface fails the checks, is not the tets' boundary
-///         (match_tet_mesh_boundary) or a tet vertex is in no tetrahedron;
+/// A surface whose triangles are not all the tets' boundary (a carved tet mesh)
+/// gets a warning. Given tets are unfolded whatever tetrahedralize.shape says
+/// (but unfolded, which makes a tet mesh of its own).
+/// @throws InputError if the surface fails the checks, has a vertex the tets do
+///         not (match_tet_mesh_boundary) or a tet vertex is in no tetrahedron;
 ///         UsageError for bad options or simplify.target_vertices > 0 (a given
-///         tet mesh is not simplified)
+///         tet mesh is not simplified) or tetrahedralize.shape: unfolded
 PreparedMesh prepare_mesh_from_tets(const SurfaceMesh& surface, const Eigen::MatrixX3d& V,
                                     const Eigen::MatrixX4i& T, const Options& options);
 

@@ -247,11 +247,10 @@ std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldR
   if (integrates && kForkAlongsideThreads)
     lambda2 = std::async(std::launch::async, [&result] { return surface_lambda2(result.surface); });
   const auto start = std::chrono::steady_clock::now();
-  // auto takes the robust route for the unfolded shape, as the input's route
-  // is the user's: the unfolded shape may or may not intersect itself
-  // somewhere, and one route for every pose keeps the poses' tets alike.
+  // Route auto is robust for the unfolded shape: it may or may not intersect
+  // itself somewhere, and one route for every pose keeps the poses' tets alike.
   TetOptions tet = options.tet;
-  if (options.tet_shape == "auto") tet.route = "robust";
+  if (tet.route == "auto") tet.route = "robust";
   UnfoldedTetMesh unfolded = tetrahedralize_unfolded(result.surface, result.cascade.positions, tet);
   result.tets = std::move(unfolded.rest);
   result.tet_report = unfolded.report;
@@ -372,7 +371,7 @@ PreparedMesh prepare_surface(const SurfaceMesh& input, const Options& options,
     prepared.surface = input;
   }
 
-  // tetrahedralize.shape auto: parts of the surface that pass through each
+  // tetrahedralize.shape contact: parts of the surface that pass through each
   // other are contact before any tet is made, and the input's tets would only
   // be checked and dropped (every such shape of ../shared/data also has tets
   // bridging a contact, docs/method.md).
@@ -434,7 +433,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
 
 namespace {
 
-// With `solved`, the surface solve ran already (shape auto, unfold_surface).
+// With `solved`, the surface solve ran already (shape contact, unfold_surface).
 UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& options,
                              const UnfoldResult* solved) {
   validate_options(options);
@@ -450,9 +449,11 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   // A prepared mesh serves every config of a batch or a comparison: the
   // unfolded shape's tets are made here whatever it holds, the input's only
   // if it was deferred.
-  bool on_unfolded =
-      tets_from_unfolded(options) && (prepared.tets_deferred || prepared.tets.T.rows() > 0);
-  const bool contact_check = tets_from_unfolded_on_contact(options);
+  // Given tets (prepare_mesh_from_tets) are the user's: never replaced.
+  const bool given = prepared.tet_report.route == "given";
+  bool on_unfolded = !given && tets_from_unfolded(options) &&
+                     (prepared.tets_deferred || prepared.tets.T.rows() > 0);
+  const bool contact_check = !given && tets_from_unfolded_on_contact(options);
   if (contact_check && prepared.tet_report.contact_face_pairs > 0) on_unfolded = true;
   if (!on_unfolded && prepared.tets_deferred) {
     result.tets = tetrahedralize_or_fall_back(result.surface, false, options, &result.tet_report,
@@ -563,7 +564,7 @@ UnfoldResult unfold_surface(const SurfaceMesh& input, const Options& options) {
     make_input_tets(options, pending, &prepared);
     return unfold_prepared(prepared, options, nullptr);
   }
-  // Shape auto: the surface solve needs no tets, and runs while the input's
+  // Shape contact: the surface solve needs no tets, and runs while the input's
   // are made (TetGen works in a process of its own).
   const auto start = std::chrono::steady_clock::now();
   const double seconds_surface = prepared.seconds;

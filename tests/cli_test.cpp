@@ -43,7 +43,7 @@ TEST(Cli, DemoRunWritesEveryOutput) {
   for (const char* key :
        {"\"E_rig\"", "\"E_str\"", "\"E_geo\"", "\"edge_ratio\"", "\"iterations\"", "\"cascades\"",
         "\"beta\"", "\"tet_vertices\"", "\"seconds_tetrahedralize\"", "\"seconds_unfold\"",
-        "\"tetrahedralization\": {\"route\": \"conforming\"", "\"intersecting_faces\": 0",
+        "\"tetrahedralization\": {\"route\": \"robust\"", "\"shape\": \"unfolded\"",
         "\"E_geo_skipped\": null"})
     EXPECT_NE(text.str().find(key), std::string::npos) << key;
   EXPECT_EQ(text.str().find("\"E_geo\": null"), std::string::npos);  // below 20,000: computed

@@ -96,21 +96,22 @@ TEST(PipelinePose, ContactConfigGivesNearlyOneCanonicalFormWhereLegsTouch) {
   expect_nearly_one_canonical_form("contact.yaml", poses, 0.02);
 }
 
-// The default (configs/default.yaml: shape auto) takes the input's tets for
-// the poses without contact and the unfolded shape's for those whose legs
-// touch: all of them end nearly at one canonical form.
+// The default (configs/default.yaml: shape auto) takes the unfolded shape's
+// tets for every pose, those whose legs touch included: all of them end nearly
+// at one canonical form.
 TEST(PipelinePose, DefaultGivesNearlyOneCanonicalFormWhereLegsTouch) {
   std::vector<ShapePose> poses = presets();
   for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
   expect_nearly_one_canonical_form("default.yaml", poses, 0.02);
 }
 
-// Crossed legs pass through each other: shape auto decides on the contact from
-// the intersecting faces, without the input's tets, and ends where checking
-// the input's tets (as a mesh prepared with them makes it) ends.
+// Crossed legs pass through each other: shape contact decides on the contact
+// from the intersecting faces, without the input's tets, and ends where
+// checking the input's tets (as a mesh prepared with them makes it) ends.
 TEST(PipelinePose, ContactFromIntersectingFacesSkipsOnlyTheInputsTets) {
   const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1));
-  const Options options = load_options(UNFOLD_SOURCE_DIR "/configs/default.yaml");
+  Options options = load_options(UNFOLD_SOURCE_DIR "/configs/default.yaml");
+  options.tet_shape = "contact";
   const PreparedMesh quick = prepare_mesh(crossed, options);
   EXPECT_TRUE(quick.tets_deferred);
   EXPECT_GT(quick.tet_report.contact_face_pairs, 0);
@@ -127,10 +128,39 @@ TEST(PipelinePose, ContactFromIntersectingFacesSkipsOnlyTheInputsTets) {
             1e-6 * rms_radius(a.canonical.V));
 }
 
+// Shape auto: the unfolded shape's tets without any contact, the input's
+// where no surface solve makes an unfolded shape (LSMDS, the volume domain)
+// or the route conforming asks for TetGen's; contact: the input's tets where
+// none bridges a contact.
+TEST(PipelinePose, ShapeAutoTakesTheUnfoldedShapesTetsWhereThereIsASurfaceSolve) {
+  const SurfaceMesh rest = make_articulated_shape(ShapePose::preset(0));
+  const Options options = load_options(UNFOLD_SOURCE_DIR "/configs/default.yaml");
+  ASSERT_EQ(options.tet_shape, "auto");
+  const PreparedMesh prepared = prepare_mesh(rest, options);
+  EXPECT_TRUE(prepared.tets_deferred);
+  EXPECT_EQ(unfold_prepared(prepared, options).tet_report.shape, "unfolded");
+  Options lsmds = options;
+  lsmds.method = "lsmds";
+  Options volume = options;
+  volume.domain = "volume";
+  Options conforming = options;
+  conforming.tet.route = "conforming";
+  Options contact = options;
+  contact.tet_shape = "contact";
+  for (const Options& input_tets : {lsmds, volume, conforming, contact}) {
+    const PreparedMesh with_tets = prepare_mesh(rest, input_tets);
+    EXPECT_FALSE(with_tets.tets_deferred);
+    const UnfoldResult r = unfold_prepared(with_tets, input_tets);
+    EXPECT_EQ(r.tet_report.shape, "input") << input_tets.method << ", " << input_tets.domain;
+    EXPECT_FALSE(r.tet_report.contact_bridge);
+  }
+}
+
 TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {
   const SurfaceMesh a = make_articulated_shape(ShapePose::preset(0));
   Options surface;
   surface.domain = "surface";
+  surface.tet_shape = "input";
   const UnfoldResult r = unfold_surface(a, surface);
   ASSERT_GT(r.tets.V.rows(), r.tets.num_surface_vertices) << "the demo shape has interior vertices";
   EXPECT_EQ(r.canonical.V.rows(), a.V.rows());

@@ -95,13 +95,16 @@ TEST(SurfaceGraphFallback, TetGenFailureFallsBackWhenAllowed) {
   const SurfaceMesh folded =
       read_surface_mesh(UNFOLD_SOURCE_DIR "/tests/bad_inputs/self_intersecting.off");
   // The conforming route fails on it (the default auto route would fall back
-  // to the robust route instead, which carves any surface).
+  // to the robust route instead, which carves any surface; the default shape
+  // would tetrahedralize the unfolded shape).
   Options conforming = kDefaults;
+  conforming.tet_shape = "input";
   conforming.tet.route = "conforming";
   EXPECT_TRUE(
       Contains(test::error_message<NumericalError>([&] { unfold_surface(folded, conforming); }),
                "tetrahedralize.fallback_surface_graph: true"));
   Options options = quick_options();
+  options.tet_shape = "input";
   options.tet.route = "conforming";
   options.fallback_surface_graph = true;
   const UnfoldResult r = unfold_surface(folded, options);

@@ -383,9 +383,10 @@ TEST(RobustSharedData, RobustIsAsGoodAsConformingOnACleanMesh) {
   const std::string path = test::shared_data("tosca/wolf0.off");
   if (path.empty()) GTEST_SKIP() << "shared data absent: tosca/wolf0.off";
   const SurfaceMesh input = read_surface_mesh(path);
-  Options conforming, robust;
+  Options conforming, robust;  // both on the input's tets
   conforming.tet.route = "conforming";
   robust.tet.route = "robust";
+  robust.tet_shape = "input";
   const UnfoldResult c = unfold_surface(input, conforming);
   const UnfoldResult r = unfold_surface(input, robust);
   EXPECT_EQ(r.tet_report.route, "robust");

@@ -67,9 +67,15 @@ TEST(TetInput, PrepareOrdersTheSurfaceFirstAndRefusesAnotherSurface) {
   EXPECT_TRUE(test::Contains(test::error_message<InputError>(
                                  [&] { prepare_mesh_from_tets(moved, grid.V, grid.T, options); }),
                              "surface vertex 3 is not a vertex of the tet mesh"));
-  SurfaceMesh flipped = surface;
-  flipped.faces.pop_back();
-  EXPECT_THROW(prepare_mesh_from_tets(flipped, grid.V, grid.T, options), InputError);
+  // The surface's vertices without all its triangles on the boundary (as in a
+  // carved tet mesh): a warning that counts them.
+  SurfaceMesh fewer = surface;
+  fewer.faces.pop_back();
+  const PreparedMesh carved = prepare_mesh_from_tets(fewer, grid.V, grid.T, options);
+  ASSERT_FALSE(carved.warnings.empty());
+  EXPECT_TRUE(test::Contains(carved.warnings.back(),
+                             "0 of the surface's 47 triangles are not boundary triangles of the "
+                             "tet mesh, and 1 of its 48 boundary triangles are not surface"));
 }
 
 TEST(TetInput, ReadersRefuseBadFiles) {
@@ -88,16 +94,17 @@ TEST(TetInput, ReadersRefuseBadFiles) {
   EXPECT_THROW(read_tet_mesh(dir.file("e.obj")), InputError);
 }
 
+// The input's tets (shape input) given back unfold exactly as they did.
 TEST(TetInput, RestTetOutputGivenBackUnfoldsToTheSameCanonicalForm) {
   test::TempDir dir;
   const std::string shape = dir.file("shape.off");
   write_surface_mesh(shape, make_articulated_shape(ShapePose::preset(0), 20));
-  ASSERT_EQ(run_unfold("--input " + shape + " --output " + dir.file("first.off") +
+  ASSERT_EQ(run_unfold("--tet_shape input --input " + shape + " --output " + dir.file("first.off") +
                        " --rest_tet_output " + dir.file("rest.vtu"))
                 .exit_code,
             0);
-  ASSERT_EQ(run_unfold("--input " + shape + " --rest_tet_output " + dir.file("rest.node") +
-                       " --output " + dir.file("first_again.off"))
+  ASSERT_EQ(run_unfold("--tet_shape input --input " + shape + " --rest_tet_output " +
+                       dir.file("rest.node") + " --output " + dir.file("first_again.off"))
                 .exit_code,
             0);
   const SurfaceMesh first = read_surface_mesh(dir.file("first.off"));
@@ -105,14 +112,14 @@ TEST(TetInput, RestTetOutputGivenBackUnfoldsToTheSameCanonicalForm) {
   EXPECT_EQ(rest.V.topRows(first.V.rows()), read_surface_mesh(shape).V);
   for (const std::string tets : {"rest.vtu", "rest.node"}) {
     // The boundary taken from the tet mesh, and the surface given beside it.
-    const test::AppRun alone =
-        run_unfold("--tet_input " + dir.file(tets) + " --output " + dir.file("alone.off"));
+    const test::AppRun alone = run_unfold("--tet_shape input --tet_input " + dir.file(tets) +
+                                          " --output " + dir.file("alone.off"));
     ASSERT_EQ(alone.exit_code, 0) << alone.err;
     EXPECT_NE(alone.err.find("given tet mesh"), std::string::npos) << alone.err;
     EXPECT_LT(max_difference(read_surface_mesh(dir.file("alone.off")).V, first.V), 1e-9) << tets;
     const test::AppRun with_surface =
-        run_unfold("--input " + shape + " --tet_input " + dir.file(tets) + " --output " +
-                   dir.file("with.off"));
+        run_unfold("--tet_shape input --input " + shape + " --tet_input " + dir.file(tets) +
+                   " --output " + dir.file("with.off"));
     ASSERT_EQ(with_surface.exit_code, 0) << with_surface.err;
     const SurfaceMesh with = read_surface_mesh(dir.file("with.off"));
     EXPECT_EQ(with.faces, first.faces);
@@ -123,6 +130,29 @@ TEST(TetInput, RestTetOutputGivenBackUnfoldsToTheSameCanonicalForm) {
   write_surface_mesh(other, make_articulated_shape(ShapePose::preset(1), 20));
   test::expect_failure("--input " + other + " --tet_input " + dir.file("rest.vtu"), 3,
                        "is not the surface", dir.file("never.off"));
+}
+
+// The default's rest tets (the unfolded shape's, carved by the robust route)
+// hold the surface's vertices, not all its triangles on their boundary: given
+// back with the surface they unfold, with a warning saying so; shape unfolded
+// would make tets of its own instead, and is refused.
+TEST(TetInput, DefaultRestTetsGivenBackUnfoldWithAWarning) {
+  test::TempDir dir;
+  const std::string shape = dir.file("shape.off");
+  write_surface_mesh(shape, make_articulated_shape(ShapePose::contact(1), 20));
+  ASSERT_EQ(run_unfold("--input " + shape + " --rest_tet_output " + dir.file("rest.vtu")).exit_code,
+            0);
+  const test::AppRun given =
+      run_unfold("--input " + shape + " --tet_input " + dir.file("rest.vtu") + " --output " +
+                 dir.file("given.off"));
+  ASSERT_EQ(given.exit_code, 0) << given.err;
+  EXPECT_NE(given.err.find("boundary is not exactly the surface"), std::string::npos) << given.err;
+  const SurfaceMesh canonical = read_surface_mesh(dir.file("given.off"));
+  EXPECT_EQ(canonical.faces, read_surface_mesh(shape).faces);
+  EXPECT_TRUE(canonical.V.allFinite());
+  test::expect_failure("--tet_shape unfolded --input " + shape + " --tet_input " +
+                           dir.file("rest.vtu") + " --output " + dir.file("never.off"),
+                       2, "tetrahedralize.shape: unfolded", dir.file("never.off"));
 }
 
 }  // namespace

@@ -87,8 +87,8 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
     tets = tetrahedralize_conforming(surface, options.quality, options.max_volume);
     r.route = "conforming";
   } else if (options.route == "robust") {
+    tets = robust();  // the count only informs: it goes on meanwhile
     r.num_intersecting_faces = count.get();
-    tets = robust();
   } else {
     // Most real scans intersect themselves: TetGen would only refuse them,
     // after seconds of work (docs/tetrahedralization.md).

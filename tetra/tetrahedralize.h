@@ -44,11 +44,11 @@ struct TetReport {
   int dropped_inverted_tets = 0;
   /// unfolded: such tets kept, as the mesh needs them to stay connected
   int inverted_rest_tets = 0;
-  /// shape auto: the surface's intersecting face pairs that are parts passing
+  /// shape contact: the surface's intersecting face pairs that are parts passing
   /// through each other (solvers/contact_bridges.h); when there are any, shape
   /// is "unfolded" and the input's tets are neither made nor checked
   int contact_face_pairs = 0;
-  /// shape auto: some tet of the input bridges a contact
+  /// shape contact: some tet of the input bridges a contact
   /// (solvers/contact_bridges.h), so shape is "unfolded"; false also when
   /// the input's tets were not checked
   bool contact_bridge = false;

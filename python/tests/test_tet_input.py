@@ -13,10 +13,12 @@ meshio = pytest.importorskip("meshio", reason="needs python3-meshio")
 
 @pytest.fixture(scope="module")
 def first_run(tmp_path_factory, demo_file):
-    """The demo's run with its rest tet mesh kept: (canonical vertices, rest .vtu)."""
+    """The demo's run on the input's tets with its rest tet mesh kept: (canonical
+    vertices, rest .vtu). Given tets unfold as the input's do."""
     tmp = tmp_path_factory.mktemp("tet_input")
     out, rest = tmp / "first.off", tmp / "rest.vtu"
-    run = run_cli("unfold", "--input", demo_file, "--output", out, "--rest_tet_output", rest)
+    run = run_cli("unfold", "--input", demo_file, "--output", out, "--rest_tet_output", rest,
+                  "--tet_shape", "input")
     assert run.returncode == 0, run.stderr
     return unfold.read_mesh(out)[0], rest
 

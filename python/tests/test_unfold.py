@@ -104,12 +104,13 @@ def test_input_error_carries_the_command_lines_message():
 def test_numerical_error_carries_the_command_lines_message():
     V, F = unfold.read_mesh(BAD_INPUTS / "self_intersecting.off")
     with pytest.raises(unfold.NumericalError, match="TetGen") as error:
-        unfold.unfold(V, F, tetrahedralize={"route": "conforming"})
+        unfold.unfold(V, F, tetrahedralize={"route": "conforming", "shape": "input"})
     # The signal TetGen's crash ends with (SIGSEGV, SIGABRT) depends on the heap.
     def any_signal(message):
         return re.sub(r"stopped with [^;]*;", "stopped with <signal>;", message)
     assert any_signal(str(error.value)) == any_signal(
-        cli_error("--input", BAD_INPUTS / "self_intersecting.off", "--tet_route", "conforming"))
+        cli_error("--input", BAD_INPUTS / "self_intersecting.off", "--tet_route", "conforming",
+                  "--tet_shape", "input"))
 
 
 @pytest.mark.parametrize(
