@@ -9,8 +9,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 
 #include "mesh/edge_graph.h"
+#include "solvers/sparse_ldlt.h"
 
 namespace unfold {
 
@@ -32,6 +34,17 @@ struct ArapSolveOptions {
   bool inverse_length_weights = false;
 };
 
+/// The factor arap_solve's global steps solve with: the free rows' block of the
+/// graph Laplacian (weighted as options.inverse_length_weights) plus the
+/// anchor. It depends on neither Q nor the rotations, so a caller can make it
+/// beside other work and hand it to arap_solve.
+/// @param graph, P as arap_solve's; options: num_fixed, anchor, inverse_length_weights
+/// @throws UsageError if P's rows are not the graph's vertices or num_fixed is
+///         not in [1, n - 1]
+/// @throws NumericalError if some free vertex has no path to a held one
+std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                               const ArapSolveOptions& options);
+
 /// Minimises the ARAP energy 1/2 sum_i sum_{j in N_i} w_ij |q_i - q_j - R_i (p_i - p_j)|^2
 /// (plus the anchor; w_ij as options.inverse_length_weights) over the free rows of Q by
 /// alternating best rotations R
@@ -42,11 +55,14 @@ struct ArapSolveOptions {
 /// @param graph the edge graph (n vertices)
 /// @param P     rest positions, n x 3
 /// @param Q     n x 3: held rows and the free rows' start (and anchor)
+/// @param factor arap_factorization(graph, P, options) made already, or null
+///        (then it is made here, when there is a step to take)
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
 ///         max_iterations < 0, tolerance < 0, anchor < 0 or anderson < 0
 /// @throws NumericalError if some free vertex has no path to a held one (checked
 ///         only when there is a step to take: max_iterations > 0)
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
-                            const ArapSolveOptions& options = {});
+                            const ArapSolveOptions& options = {},
+                            const SparseLdlt* factor = nullptr);
 
 }  // namespace unfold

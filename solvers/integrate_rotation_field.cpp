@@ -1,6 +1,7 @@
 #include "solvers/integrate_rotation_field.h"
 
 #include <chrono>
+#include <future>
 #include <utility>
 
 #include "core/errors.h"
@@ -23,11 +24,19 @@ Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::M
   if (options.iterations > 0) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
+    const ArapSolveOptions anchored{
+        1, options.iterations - 1, options.tolerance, options.anchor * lambda2, 5, inverse_length};
+    // The anchored steps' factor depends on neither the integration nor its
+    // result: it is made on the other core meanwhile (CHOLMOD factorizes on one
+    // thread, and so does the integration's own factor).
+    std::future<std::unique_ptr<SparseLdlt>> pending;
+    if (anchored.max_iterations > 0 && graph.num_vertices > 1)
+      pending =
+          std::async(std::launch::async, [&] { return arap_factorization(graph, P, anchored); });
     X = arap_solve(graph, P, std::move(X), {1, 1, 0.0, 0.0, 0, inverse_length});
     const auto integrated = Clock::now();
-    X = arap_solve(graph, P, std::move(X),
-                   {1, options.iterations - 1, options.tolerance, options.anchor * lambda2, 5,
-                    inverse_length});
+    const std::unique_ptr<SparseLdlt> factor = pending.valid() ? pending.get() : nullptr;
+    X = arap_solve(graph, P, std::move(X), anchored, factor.get());
     if (times) {
       times->integration = std::chrono::duration<double>(integrated - start).count();
       times->anchored = std::chrono::duration<double>(Clock::now() - integrated).count();

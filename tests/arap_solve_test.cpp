@@ -220,6 +220,26 @@ TEST(ArapSolve, InverseLengthWeightsMinimiseTheirOwnEnergy) {
             anchored_energy(graph, g.mesh.V, weighted, bent, 1, 0.1));
 }
 
+// A factor made apart (arap_factorization, as the integration makes the
+// anchored steps' beside its own) gives the steps arap_solve's own factor gives,
+// bit for bit; one made for another anchor gives other steps.
+TEST(ArapSolve, AFactorMadeApartGivesTheSameSteps) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
+  ArapSolveOptions options = anchored_to_convergence();
+  options.inverse_length_weights = true;
+  const Eigen::MatrixX3d own = arap_solve(graph, g.mesh.V, bent, options);
+  const auto factor = arap_factorization(graph, g.mesh.V, options);
+  EXPECT_EQ(arap_solve(graph, g.mesh.V, bent, options, factor.get()), own);
+  ArapSolveOptions stronger = options;
+  stronger.anchor = 10 * options.anchor;
+  const auto other = arap_factorization(graph, g.mesh.V, stronger);
+  EXPECT_GT((arap_solve(graph, g.mesh.V, bent, options, other.get()) - own).norm(), 1e-6);
+  EXPECT_THROW(arap_factorization(graph, g.mesh.V, held(int(g.mesh.V.rows()))), UsageError);
+  EXPECT_THROW(arap_factorization(graph, g.mesh.V.topRows(10), options), UsageError);
+}
+
 TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
