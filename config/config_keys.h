@@ -27,8 +27,7 @@
     "contact: unfolded where the input's tets bridge a contact, else input")                       \
   X(contact_geodesic, "tetrahedralize.contact_geodesic", contact_geodesic,                         \
     "shape contact: a tet edge bridges a contact when its ends are farther apart along the "       \
-    "surface "                                                                                     \
-    "than this times sqrt(area) and 4 times their distance (docs/method.md, contact)")             \
+    "surface than this times sqrt(area) and 4 times their distance (docs/method.md, contact)")     \
   X(components, "components", components,                                                          \
     "several connected components: refuse (error naming the count) or separately (each "           \
     "unfolded on its own, put back together in input order)")                                      \

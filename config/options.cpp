@@ -234,6 +234,15 @@ Options load_options(const std::string& config_path,
   return options;
 }
 
+namespace {
+
+// Whether the method solves on the surface first, whose unfolded shape a tet mesh can be made of.
+bool solves_surface_first(const Options& options) {
+  return options.domain == "surface" && options.method != "lsmds" && options.method != "scf";
+}
+
+}  // namespace
+
 void validate_options(const Options& o) {
   require(o.method == "local_global" || o.method == "ceres" || o.method == "dpmu" ||
               o.method == "lsmds" || o.method == "scf",
@@ -255,9 +264,7 @@ void validate_options(const Options& o) {
           "tetrahedralize.shape",
           "must be input, unfolded, auto or contact, got '" + o.tet_shape + "'");
   require(
-      o.tet_shape != "unfolded" ||
-          (o.domain == "surface" && o.method != "lsmds" && o.method != "scf"),
-      "tetrahedralize.shape",
+      o.tet_shape != "unfolded" || solves_surface_first(o), "tetrahedralize.shape",
       "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method other "
       "than lsmds and scf (auto and contact fall back to the input's tets there)");
   require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
@@ -334,15 +341,6 @@ void validate_options(const Options& o) {
   validate_lsmds_options(o.lsmds);
   validate_scf_options(o.scf);
 }
-
-namespace {
-
-// Whether the method solves on the surface first, whose unfolded shape a tet mesh can be made of.
-bool solves_surface_first(const Options& options) {
-  return options.domain == "surface" && options.method != "lsmds" && options.method != "scf";
-}
-
-}  // namespace
 
 // Route conforming with shape auto asks for TetGen's own tets of the input.
 bool tets_from_unfolded(const Options& options) {

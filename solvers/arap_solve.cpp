@@ -52,19 +52,15 @@ Eigen::SparseMatrix<double> weighted_laplacian(const EdgeGraph& graph,
   return L;
 }
 
-}  // namespace
-
-std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                               const ArapSolveOptions& options) {
-  const int n = graph.num_vertices, num_fixed = options.num_fixed, m = n - num_fixed;
-  if (P.rows() != n || num_fixed < 1 || m < 1)
-    throw UsageError(
-        "arap_factorization: need P with one row per graph vertex and 1 to n - 1 held");
+// arap_factorization with the edge weights computed already (m >= 1 free rows).
+std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
+                                                 const std::vector<double>& weights,
+                                                 const ArapSolveOptions& options) {
+  const int m = graph.num_vertices - options.num_fixed;
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
   // to held vertices go to the right side.
   Eigen::SparseMatrix<double> L =
-      (options.inverse_length_weights ? weighted_laplacian(graph, edge_weights(graph, P, true))
-                                      : graph_laplacian(graph))
+      (options.inverse_length_weights ? weighted_laplacian(graph, weights) : graph_laplacian(graph))
           .bottomRightCorner(m, m);
   if (options.anchor > 0) {
     Eigen::SparseMatrix<double> I(m, m);
@@ -83,6 +79,18 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
   return ldlt;
 }
 
+}  // namespace
+
+std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                               const ArapSolveOptions& options) {
+  const int n = graph.num_vertices, num_fixed = options.num_fixed;
+  if (P.rows() != n || num_fixed < 1 || num_fixed >= n)
+    throw UsageError(
+        "arap_factorization: need P with one row per graph vertex and 1 to n - 1 held");
+  return factorize_free_block(graph, edge_weights(graph, P, options.inverse_length_weights),
+                              options);
+}
+
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
                             const ArapSolveOptions& options, const SparseLdlt* factor) {
   const int n = graph.num_vertices, num_fixed = options.num_fixed, m = n - num_fixed;
@@ -97,7 +105,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   const std::vector<double> weights = edge_weights(graph, P, options.inverse_length_weights);
   std::unique_ptr<SparseLdlt> own;
   if (!factor) {
-    own = arap_factorization(graph, P, options);
+    own = factorize_free_block(graph, weights, options);
     factor = own.get();
   }
   const SparseLdlt& ldlt = *factor;
