@@ -136,12 +136,19 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
   solver.method = use_iterative_solver(solver, L) ? "iterative" : "direct";
   result.linear_solver = solver.method;
   std::shared_ptr<AmgData> amg;
+  // With the direct solver, lambda_2's shift-invert Lanczos and the backend's
+  // setup (the global matrix's symbolic analysis: beta only scales values) each
+  // run on one thread: side by side (david0's surface: 0.13 s of 0.23 s hidden).
+  std::future<std::unique_ptr<CascadeBackend>> direct_backend;
   if (result.linear_solver == "iterative") {
     std::tie(amg, result.seconds_amg) =
         speculative_amg.valid() ? speculative_amg.get() : build_amg();
     result.amg_levels = int(amg->levels.size());
     result.lambda2 = fiedler_value(L, *amg, masses);
   } else {
+    direct_backend = std::async(std::launch::async, [&] {
+      return make_backend({options.method, solver, options.ceres}, problem, nullptr);
+    });
     result.lambda2 = fiedler_value(L, masses);
   }
   const BetaStart beta = starting_beta(options.beta_mode, options.beta_value,
@@ -164,7 +171,8 @@ void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& o
   result.seconds_lambda2 = seconds_since(start);
   const auto cascade_start = std::chrono::steady_clock::now();
   const std::unique_ptr<CascadeBackend> backend =
-      make_backend({options.method, solver, options.ceres}, problem, amg);
+      direct_backend.valid() ? direct_backend.get()
+                             : make_backend({options.method, solver, options.ceres}, problem, amg);
   result.cascade = run_cascade(problem, *backend, cascade);
   result.seconds_cascade = seconds_since(cascade_start);
   const auto* local_global = dynamic_cast<const LocalGlobalBackend*>(backend.get());

@@ -1,6 +1,7 @@
 #include "solvers/sparse_ldlt.h"
 
 #include <cholmod.h>
+#include <omp.h>
 
 #include <Eigen/SparseCholesky>
 #include <cmath>
@@ -10,6 +11,9 @@
 
 namespace unfold {
 namespace {
+
+// Rows from which a solve's three columns go to two threads.
+constexpr int kMinParallelSolveRows = 20000;
 
 // A's lower triangle as a CHOLMOD matrix of the given xtype (pattern, or real
 // with the values left to fill), or null when CHOLMOD runs out of memory.
@@ -40,24 +44,48 @@ struct SparseLdlt::Impl {
   // Eigen backend.
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> eigen;
   // CHOLMOD backend: A's lower triangle in CHOLMOD's CSC, kept so that each
-  // factorization only copies values; X/Y/E are cholmod_solve2's reusable workspace.
+  // factorization only copies values.
   cholmod_common common;
   cholmod_sparse* A = nullptr;
   cholmod_factor* L = nullptr;
-  cholmod_dense* X = nullptr;
-  cholmod_dense* Y = nullptr;
-  cholmod_dense* E = nullptr;
+  // The solves' workspaces: [0] for x and y, [1] for z when the columns are
+  // solved on two threads (each with its own cholmod_common, which CHOLMOD
+  // writes to), else [0] for all three.
+  struct Workspace {
+    cholmod_common common;
+    cholmod_dense* X = nullptr;
+    cholmod_dense* Y = nullptr;
+    cholmod_dense* E = nullptr;
+  };
+  mutable Workspace work[2];
   bool cholmod_started = false;
   int n = -1;
 
   ~Impl() {
     if (!cholmod_started) return;
-    cholmod_free_dense(&X, &common);
-    cholmod_free_dense(&Y, &common);
-    cholmod_free_dense(&E, &common);
+    for (Workspace& w : work) {
+      cholmod_free_dense(&w.X, &w.common);
+      cholmod_free_dense(&w.Y, &w.common);
+      cholmod_free_dense(&w.E, &w.common);
+      cholmod_finish(&w.common);
+    }
     cholmod_free_factor(&L, &common);
     cholmod_free_sparse(&A, &common);
     cholmod_finish(&common);
+  }
+
+  // Columns [first, first + count) of x = A^{-1} b, into w.X; false if CHOLMOD fails.
+  bool solve_columns(const Eigen::MatrixX3d& b, int first, int count, Workspace* w) const {
+    cholmod_dense B;  // a view of b: CHOLMOD only reads it
+    B.nrow = size_t(n);
+    B.ncol = size_t(count);
+    B.nzmax = B.nrow * B.ncol;
+    B.d = B.nrow;
+    B.x = const_cast<double*>(b.col(first).data());
+    B.z = nullptr;
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    return cholmod_solve2(CHOLMOD_A, L, &B, nullptr, &w->X, nullptr, &w->Y, &w->E, &w->common);
   }
 
   // Copies the lower triangle of M's values (pattern fixed by analyze) into A.
@@ -73,6 +101,7 @@ struct SparseLdlt::Impl {
 SparseLdlt::SparseLdlt(Backend backend) : backend_(backend), impl_(new Impl) {
   if (backend_ != Backend::kEigen) {
     cholmod_start(&impl_->common);
+    for (Impl::Workspace& w : impl_->work) cholmod_start(&w.common);
     impl_->cholmod_started = true;
     // Supernodal is LL^T only: the simplicial LDL^T serves indefinite matrices.
     const bool cholesky = backend_ == Backend::kCholmodCholesky;
@@ -152,19 +181,32 @@ void SparseLdlt::solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const {
     *x = m.eigen.solve(b);
     return;
   }
-  cholmod_dense B;  // a view of b: CHOLMOD only reads it
-  B.nrow = size_t(m.n);
-  B.ncol = 3;
-  B.nzmax = B.nrow * 3;
-  B.d = B.nrow;
-  B.x = const_cast<double*>(b.data());
-  B.z = nullptr;
-  B.xtype = CHOLMOD_REAL;
-  B.dtype = CHOLMOD_DOUBLE;
-  if (!cholmod_solve2(CHOLMOD_A, m.L, &B, nullptr, &m.X, nullptr, &m.Y, &m.E, &m.common))
-    throw NumericalError("SparseLdlt: CHOLMOD solve failed (status " +
-                         std::to_string(m.common.status) + ")");
-  *x = Eigen::Map<const Eigen::MatrixX3d>(static_cast<const double*>(m.X->x), m.n, 3);
+  // From kMinParallelSolveRows on, z is solved on a second thread beside x and
+  // y (each solve's triangular sweeps run on one thread): david0's anchored
+  // ARAP steps (55k rows) took 13 ms a solve, 10.5 ms so (docs/performance.md).
+  const bool split = m.n >= kMinParallelSolveRows && omp_get_max_threads() > 1;
+  bool solved[2] = {true, true};
+  if (split) {
+#pragma omp parallel sections num_threads(2)
+    {
+#pragma omp section
+      solved[0] = m.solve_columns(b, 0, 2, &m.work[0]);
+#pragma omp section
+      solved[1] = m.solve_columns(b, 2, 1, &m.work[1]);
+    }
+  } else {
+    solved[0] = m.solve_columns(b, 0, 3, &m.work[0]);
+  }
+  for (int k = 0; k < 2; ++k)
+    if (!solved[k])
+      throw NumericalError("SparseLdlt: CHOLMOD solve failed (status " +
+                           std::to_string(m.work[k].common.status) + ")");
+  const int first = split ? 2 : 3;
+  x->resize(m.n, 3);
+  x->leftCols(first) =
+      Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(m.work[0].X->x), m.n, first);
+  if (split)
+    x->col(2) = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(m.work[1].X->x), m.n);
 }
 
 double predicted_factorization_flops(const Eigen::SparseMatrix<double>& A) {
