@@ -57,7 +57,7 @@ struct SparseLdlt::Impl {
     cholmod_dense* Y = nullptr;
     cholmod_dense* E = nullptr;
   };
-  mutable Workspace work[2];
+  Workspace work[2];
   bool cholmod_started = false;
   int n = -1;
 
