@@ -46,6 +46,12 @@
   X(integrate_weights, "integrate.weights", integrate.weights,                                     \
     "integrate.iterations: edge weights of the steps: uniform, or inverse_length (a spring's "     \
     "stiffness: a tet mesh's long chords do not stiffen its bending, docs/method.md)")             \
+  X(soften_scale, "soften.scale", soften.scale,                                                    \
+    "soft joints: solve again from the solution with each ARAP edge's weight times "               \
+    "1 / (1 + (k / (scale * median k))^2), k the turn of the solution's rotation field per unit "  \
+    "length along the edge (the input's joints straighten, docs/method.md); 0: off")               \
+  X(soften_floor, "soften.floor", soften.floor,                                                    \
+    "soften.scale: no edge's weight factor below this (in (0, 1])")                                \
   X(beta_mode, "beta.mode", beta_mode,                                                             \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                            \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                               \

@@ -178,6 +178,7 @@ Options::Options() {
   cascade.anderson = 5;
   integrate.iterations = 60;
   integrate.weights = "inverse_length";
+  soften.scale = 2.0;
   energy.stretch_masses = "lumped";
 }
 
@@ -273,6 +274,9 @@ void validate_options(const Options& o) {
   require(o.integrate.weights == "uniform" || o.integrate.weights == "inverse_length",
           "integrate.weights",
           "must be uniform or inverse_length, got '" + o.integrate.weights + "'");
+  require(std::isfinite(o.soften.scale) && o.soften.scale >= 0, "soften.scale",
+          "must be >= 0 (0 = off)");
+  require(o.soften.floor > 0 && o.soften.floor <= 1, "soften.floor", "must be in (0, 1]");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
   require(std::isfinite(o.integrate.tolerance) && o.integrate.tolerance >= 0, "integrate.tolerance",

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "energies/energy_terms.h"
+#include "energies/soft_joint_factors.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
@@ -51,6 +52,7 @@ struct Options {
   CascadeOptions cascade;             ///< cascade.beta is derived from beta_mode / beta_value
   LinearSolverOptions linear_solver;  ///< the global step's solver (method local_global)
   IntegrateOptions integrate;         ///< after the cascade (pose invariance)
+  SoftenOptions soften;               ///< the cascade again with its joints softened
   EnergyOptions energy;
   CeresOptions ceres;
   LsmdsOptions lsmds;                                              ///< method: lsmds only

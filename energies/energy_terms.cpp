@@ -30,7 +30,8 @@ Eigen::VectorXd stretch_masses(const TetMesh& tets, const EnergyOptions& options
 }  // namespace
 
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
-                              const EnergyOptions& options, const Eigen::VectorXd& masses) {
+                              const EnergyOptions& options, const Eigen::VectorXd& masses,
+                              const std::vector<double>& arap_factors) {
   EnergyTerms terms;
   terms.push_back(std::make_unique<StretchEnergy>(graph, options.stretch_weight,
                                                   stretch_masses(tets, options, masses)));
@@ -46,6 +47,11 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const E
   else
     throw UsageError("config key 'arap.weights' must be uniform or cotangent, got '" +
                      options.arap_weights + "'");
+  if (!arap_factors.empty()) {
+    if (arap_factors.size() != weights.size())
+      throw UsageError("make_energy_terms: arap_factors needs one factor per graph edge");
+    for (size_t e = 0; e < weights.size(); ++e) weights[e] *= arap_factors[e];
+  }
   if (options.arap_weight > 0)
     terms.push_back(std::make_unique<ArapEnergy>(graph, tets.V, weights, options.arap_weight));
   if (options.edge_length_weight > 0)

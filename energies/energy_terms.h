@@ -31,10 +31,14 @@ using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
 /// @param graph  the edge graph of `tets` (of its surface when tets.T is empty)
 /// @param masses the stretch term's vertex masses with stretch_masses: lumped
 ///        (mesh/lumped_masses.h); when empty, the lumped volumes of tets.T
-/// @throws UsageError for an unknown arap_weights or stretch_masses, or lumped masses
-///         asked of a mesh without tets and none given; InputError for a bad pairs file
+/// @param arap_factors per graph edge, factors of the ARAP weights (soft joints,
+///        energies/soft_joint_factors.h); empty: none
+/// @throws UsageError for an unknown arap_weights or stretch_masses, lumped masses
+///         asked of a mesh without tets and none given, or arap_factors not one per
+///         edge; InputError for a bad pairs file
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
                               const EnergyOptions& options,
-                              const Eigen::VectorXd& masses = Eigen::VectorXd());
+                              const Eigen::VectorXd& masses = Eigen::VectorXd(),
+                              const std::vector<double>& arap_factors = {});
 
 }  // namespace unfold

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/errors.h"
 #include "core/progress.h"
 #include "metrics/edge_ratio.h"
 #include "solvers/unfold_problem.h"
@@ -12,12 +13,16 @@
 namespace unfold {
 
 CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
-                          const CascadeOptions& options) {
+                          const CascadeOptions& options, const Eigen::MatrixX3d* start) {
   CascadeResult result;
-  Eigen::MatrixX3d Q = problem.rest;
-  const Rotations identity(size_t(problem.num_vertices()), Eigen::Matrix3d::Identity());
+  Eigen::MatrixX3d Q = start ? *start : problem.rest;
+  if (Q.rows() != problem.num_vertices())
+    throw UsageError("run_cascade: the start needs one row per vertex");
   double beta = options.beta;
-  double energy = total_energy(problem, Q, identity, beta);  // f_s of Algorithm 1
+  // At the rest positions the identities are the best rotations.
+  Rotations R(size_t(problem.num_vertices()), Eigen::Matrix3d::Identity());
+  if (start) fit_rotations(problem, Q, beta, &R);
+  double energy = total_energy(problem, Q, R, beta);  // f_s of Algorithm 1
   const StageOptions stage{options.k_iter, options.epsilon, options.edge_ratio_band,
                            options.break_in_band, options.anderson};
   for (int cascade = 1; cascade <= options.num_cascades; ++cascade) {
@@ -45,7 +50,7 @@ CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
   }
   result.final_beta = beta;
   result.iterations = int(result.history.size());
-  Rotations R;
+  R.clear();  // a fresh fit, not one refined from the start's rotations
   fit_rotations(problem, Q, beta, &R);
   result.final_energy = total_energy(problem, Q, R, beta);
   result.edge_ratio = edge_ratio(*problem.graph, problem.rest, Q);

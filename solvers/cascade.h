@@ -80,10 +80,11 @@ struct CascadeResult {
   std::vector<IterationRecord> history;
 };
 
-/// Runs Algorithm 1 from Q = P with the given backend (at most options.k_iter
+/// Runs Algorithm 1 from Q = P, or from `start` (a warm start, e.g. the solution
+/// of a nearby problem), with the given backend (at most options.k_iter
 /// iterations per cascade for backends that count them).
 /// @throws NumericalError if the backend fails or a non-finite position appears
 CascadeResult run_cascade(const UnfoldProblem& problem, CascadeBackend& backend,
-                          const CascadeOptions& options);
+                          const CascadeOptions& options, const Eigen::MatrixX3d* start = nullptr);
 
 }  // namespace unfold

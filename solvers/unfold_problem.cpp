@@ -7,11 +7,12 @@
 namespace unfold {
 
 UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
-                                  const EnergyOptions& options, const Eigen::VectorXd& masses) {
+                                  const EnergyOptions& options, const Eigen::VectorXd& masses,
+                                  const std::vector<double>& arap_factors) {
   UnfoldProblem problem;
   problem.graph = std::make_shared<const EdgeGraph>(std::move(graph));
   problem.rest = mesh.V;
-  problem.terms = make_energy_terms(mesh, problem.graph, options, masses);
+  problem.terms = make_energy_terms(mesh, problem.graph, options, masses, arap_factors);
   return problem;
 }
 

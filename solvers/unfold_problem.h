@@ -23,11 +23,12 @@ struct UnfoldProblem {
 
 /// The problem of the terms `options` enable on `mesh`, owning its graph.
 /// @param graph  the edge graph of mesh (of its surface when mesh.T is empty)
-/// @param masses the stretch term's vertex masses, as make_energy_terms
+/// @param masses, arap_factors as make_energy_terms
 /// @throws as make_energy_terms
 UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
                                   const EnergyOptions& options,
-                                  const Eigen::VectorXd& masses = Eigen::VectorXd());
+                                  const Eigen::VectorXd& masses = Eigen::VectorXd(),
+                                  const std::vector<double>& arap_factors = {});
 
 /// E(Q; R) = sum_t w_t(beta) e_t(Q; R); with grad, its gradient at fixed R
 /// (grad is resized to n x 3). At the optimal R (fit_rotations) this is also

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "core/errors.h"
 #include "geometry/best_rotation.h"
 #include "mesh/best_rotations.h"
 #include "solvers/cascade.h"
@@ -189,6 +190,28 @@ TEST(SolverCascade, RigidInputStaysRigidAndSpreads) {
   EXPECT_TRUE(result.bounded);
   EXPECT_GT(result.edge_ratio, 0.95);
   EXPECT_LT(result.edge_ratio, 1.3);
+}
+
+TEST(SolverCascade, WarmStartFromItsSolutionStaysThere) {
+  // A converged solve, then the same solve from its solution: the energy is
+  // already stationary, so the second stops at once where the first ended.
+  Fixture f;
+  CascadeOptions options;
+  options.beta = 1.5 * f.n / f.lambda2;
+  options.num_cascades = 1;
+  options.k_iter = 3000;
+  options.epsilon = 1e-12;
+  options.break_in_band = false;
+  LocalGlobalBackend backend(f.problem);
+  const CascadeResult cold = run_cascade(f.problem, backend, options);
+  ASSERT_GT(cold.iterations, 5);
+  const CascadeResult warm = run_cascade(f.problem, backend, options, &cold.positions);
+  EXPECT_LE(warm.iterations, 3);
+  EXPECT_LT((warm.positions - cold.positions).cwiseAbs().maxCoeff(),
+            1e-5 * cold.positions.cwiseAbs().maxCoeff());
+  EXPECT_NEAR(warm.final_energy, cold.final_energy, 1e-9 * std::abs(cold.final_energy));
+  const Eigen::MatrixX3d too_few = cold.positions.topRows(2);
+  EXPECT_THROW(run_cascade(f.problem, backend, options, &too_few), UsageError);
 }
 
 }  // namespace
