@@ -110,10 +110,12 @@ constexpr int kSpeculativeAmgVertices = 20000;
 
 // lambda_2, beta and the cascade on the vertices and edges of `mesh`, the ARAP
 // weights times arap_factors (none when empty), from `warm` (null: the rest
-// positions). Times add to out's.
-void cascade_once(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
-                  const Eigen::VectorXd& masses, const std::vector<double>& arap_factors,
-                  const Eigen::MatrixX3d* warm, UnfoldResult* out) {
+// positions). Times add to out's. Returns the linear solver it used for lambda_2
+// and the global steps: direct or iterative (options.linear_solver.method
+// decided, for auto).
+std::string cascade_once(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
+                         const Eigen::VectorXd& masses, const std::vector<double>& arap_factors,
+                         const Eigen::MatrixX3d* warm, UnfoldResult* out) {
   UnfoldResult& result = *out;
   const auto start = std::chrono::steady_clock::now();
   const UnfoldProblem problem =
@@ -182,7 +184,7 @@ void cascade_once(const EdgeGraph& graph, const TetMesh& mesh, const Options& op
   const auto* local_global = dynamic_cast<const LocalGlobalBackend*>(backend.get());
   if (!local_global) {
     result.linear_solver = "ceres";
-    return;
+    return solver.method;
   }
   result.cg = local_global->data().cg_stats;
   if (result.cg.unconverged_solves > 0)
@@ -190,6 +192,7 @@ void cascade_once(const EdgeGraph& graph, const TetMesh& mesh, const Options& op
         std::to_string(result.cg.unconverged_solves) + " of " + std::to_string(result.cg.solves) +
         " global steps stopped at linear_solver.cg_max_iterations (worst relative residual " +
         std::to_string(result.cg.worst_relative_residual) + ")");
+  return solver.method;
 }
 
 // The paper's method and the energy-term baselines: lambda_2, beta, the cascade,
@@ -199,15 +202,21 @@ void cascade_once(const EdgeGraph& graph, const TetMesh& mesh, const Options& op
 void solve_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Options& options,
                    UnfoldResult* out) {
   const Eigen::VectorXd masses = stretch_masses(mesh, out->surface, options.energy);
-  if (!(options.soften.scale > 0 && options.energy.arap_weight > 0))
-    return cascade_once(graph, mesh, options, masses, {}, nullptr, out);
+  if (!(options.soften.scale > 0 && options.energy.arap_weight > 0)) {
+    cascade_once(graph, mesh, options, masses, {}, nullptr, out);
+    return;
+  }
   // The first solve converged as far as the second: stopped earlier (100 times
   // cascade.epsilon), its joints differ enough to move wolf's mean pose ratio
   // from 0.19 to 0.28 (docs/method.md, soft joints).
-  cascade_once(graph, mesh, options, masses, {}, nullptr, out);
+  Options softened = options;
+  // The reweighted matrices have the first solve's pattern, so its solver
+  // serves them: no second symbolic analysis, and no speculative AMG hierarchy
+  // built only to be dropped.
+  softened.linear_solver.method = cascade_once(graph, mesh, options, masses, {}, nullptr, out);
   const Eigen::MatrixX3d solved = out->cascade.positions;
   const int first_iterations = out->cascade.iterations;
-  cascade_once(graph, mesh, options, masses,
+  cascade_once(graph, mesh, softened, masses,
                soft_joint_factors(graph, mesh.V, solved, options.soften), &solved, out);
   LOG(INFO) << "soft joints: " << first_iterations << " iterations, then "
             << out->cascade.iterations << " with the joints softened";
