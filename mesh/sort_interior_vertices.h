@@ -2,7 +2,7 @@
 // points in insertion order, scattered over the volume, so every sweep over the
 // mesh (sparse products, AMG cycles, Dijkstra, the local step) keeps missing
 // the cache. Sorting them along a space-filling curve puts spatial neighbours
-// next to each other in memory (docs/performance.md: 1.3-1.6x on those sweeps).
+// next to each other in memory (docs/history/performance.md: 1.3-1.6x on those sweeps).
 #pragma once
 
 #include "mesh/tet_mesh.h"

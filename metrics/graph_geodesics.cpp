@@ -129,7 +129,7 @@ void graph_geodesics(const EdgeGraph& graph, const NeighborLengths& lengths, int
   // A vertex's new bucket is at most longest / width + 1 ahead of the current
   // one. Width: a 32nd of the longest length (the shortest, when longer). Far
   // fewer buckets than width = shortest (808 on a 62k-vertex FAUST tet mesh),
-  // few re-relaxations: 20 % faster there (docs/performance.md).
+  // few re-relaxations: 20 % faster there (docs/history/performance.md).
   const double width = std::max(lengths.shortest, lengths.longest / 32);
   const double span = lengths.longest / width;
   if (lengths.shortest > 0 && std::isfinite(span) && span < 4.0 * graph.num_vertices)

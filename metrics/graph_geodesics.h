@@ -10,7 +10,7 @@ namespace unfold {
 
 /// One CSR neighbour entry with its Euclidean length |p_i - p_j|. Packed to 12
 /// bytes: a Dijkstra run reads a vertex's entries in one stream, and that read
-/// is most of its time (docs/performance.md, "Fourth pass").
+/// is most of its time (docs/history/performance.md, issue 15's "Fourth pass").
 #pragma pack(push, 4)
 struct NeighborArc {
   int neighbor;

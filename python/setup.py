@@ -53,6 +53,10 @@ setup(
     name="unfold",
     version=version(),
     description="Detail-preserving unfolding of non-rigid 3D shapes into a canonical pose",
+    # AGPL-3.0-or-later: TetGen (AGPL-3.0-or-later) and CGAL's skeletonization
+    # (GPL-3.0-or-later) are linked in; LICENSE and the README's "Licence".
+    license="AGPL-3.0-or-later",
+    classifiers=["License :: OSI Approved :: GNU Affero General Public License v3 or later (AGPLv3+)"],
     python_requires=">=3.8",
     install_requires=["numpy"],
     packages=["unfold"],

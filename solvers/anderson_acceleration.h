@@ -21,7 +21,7 @@ class AndersonAcceleration {
   /// least-squares fit of the residual f = g - x by the last residual
   /// differences dF (rank-revealing QR, so repeated steps do no harm). The
   /// differences and the QR keep their storage from step to step (fresh ones
-  /// were 13 MB of new pages a step at 166k unknowns: docs/performance.md).
+  /// were 13 MB of new pages a step at 166k unknowns: docs/history/performance.md).
   Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& g);
 
   /// Forgets the past steps (e.g. after an extrapolation was rejected).

@@ -23,7 +23,7 @@ struct AmgOptions {
   double smoothing_ratio = 10;
   /// V-cycle in float (the hierarchy is built in double): its sparse products
   /// move half the bytes, 10-15 % off the global step at 75k vertices
-  /// (docs/performance.md). A preconditioner need only be close to M^+; the
+  /// (docs/history/performance.md). A preconditioner need only be close to M^+; the
   /// solvers' own products and residuals stay in double.
   bool single_precision = true;
 };

@@ -183,7 +183,7 @@ void SparseLdlt::solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const {
   }
   // From kMinParallelSolveRows on, z is solved on a second thread beside x and
   // y (each solve's triangular sweeps run on one thread): david0's anchored
-  // ARAP steps (55k rows) took 13 ms a solve, 10.5 ms so (docs/performance.md).
+  // ARAP steps (55k rows) took 13 ms a solve, 10.5 ms so (docs/history/performance.md).
   const bool split = m.n >= kMinParallelSolveRows && omp_get_max_threads() > 1;
   bool solved[2] = {true, true};
   if (split) {

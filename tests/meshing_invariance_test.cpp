@@ -32,7 +32,7 @@ std::vector<int> front_half(const SurfaceMesh& mesh) {
   return front;
 }
 
-// Measured this way on the rest pose and the three presets (docs/method.md):
+// Measured this way on the rest pose and the three presets (docs/history/method.md):
 // 0.004-0.005 with the default (stretch weighted by area), 0.072-0.073 with
 // uniform stretch weights (configs/invariant.yaml); the paper's config
 // 0.042-0.043.

@@ -153,7 +153,7 @@ constexpr int kPacket = 8;  // queries traversing the tree together
 // query leaving the walk where its cluster is far, so that each node's far
 // field (a square root and a division per query, most of the walk) is
 // computed for all of them at once in vector registers: the carve of a 62k-vertex
-// human 0.68 -> 0.60 s (docs/performance.md). Each query meets the nodes it
+// human 0.68 -> 0.60 s (docs/history/performance.md). Each query meets the nodes it
 // meets alone, in the same order, so its sum is the one-query walk's bit for bit.
 template <bool Fast>
 void winding_numbers_at(const FastWindingNumberTree& tree, const Eigen::Vector3d* q, int count,

@@ -57,7 +57,7 @@ struct ClassifyOptions {
 /// coarser far field, then those whose |w| is within `margin` of 1/2 again at
 /// the tree's accuracy. Elsewhere the coarse value is kept: it differs from the
 /// tree-accuracy one by at most 0.164 over the 1.9 million queries of the
-/// twelve robust-route meshes of ../shared/data (docs/performance.md), so it is
+/// twelve robust-route meshes of ../shared/data (docs/history/performance.md), so it is
 /// on the same side of 1/2.
 Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const Eigen::MatrixX3d& Q,
