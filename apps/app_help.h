@@ -47,6 +47,7 @@ inline std::string config_key_topic(const std::string& path) {
     return "Energy terms";
   if (section == "ceres" || section == "lsmds") return "Baselines (method ceres, lsmds)";
   if (section == "metrics") return "Metrics and pictures";
+  if (section == "match") return "Matching (unfold_match)";
   return "Method and config";
 }
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "apps/app_main.h"
-#include "config/config_keys.h"
+#include "apps/config_flags.h"
 #include "config/options.h"
 #include "core/atomic_file.h"
 #include "core/output_transaction.h"
@@ -56,8 +56,9 @@ DEFINE_string(render, "",
               "before/after picture (.png): side and top views of the input and the canonical "
               "pose, same framing; with --beta_sweep the sweep instead");
 DEFINE_string(render_color, "shading",
-              "colouring of the canonical pose in --render: shading, or rigidity (per-vertex "
-              "rigidity error)");
+              "colouring of the canonical pose in --render: shading, rigidity (per-vertex "
+              "rigidity error), or damage (per vertex the largest |ln r| of its surface edges' "
+              "length ratios at the input's area; ln 3 = 1.1 is the damage bound)");
 DEFINE_bool(render_skeleton, false,
             "method scf: draw the curve skeleton in --render (the input's over the input, the "
             "straightened one over the canonical pose)");
@@ -73,24 +74,10 @@ DEFINE_bool(progress, true,
             "on a terminal: a progress line (stage, iterations, elapsed time) rewritten in place "
             "on stderr; plain lines when stderr is a file or a pipe");
 
-// The key and its default are shown by --help (apps/app_help.h).
-#define UNFOLD_DEFINE_KEY_FLAG(flag, path, member, help) DEFINE_string(flag, "", help);
-UNFOLD_CONFIG_KEYS(UNFOLD_DEFINE_KEY_FLAG)
-#undef UNFOLD_DEFINE_KEY_FLAG
-
 namespace {
 
-std::map<std::string, std::string> config_overrides() {
-  std::map<std::string, std::string> overrides;
-#define UNFOLD_COLLECT_KEY_FLAG(flag, path, member, help) \
-  if (!FLAGS_##flag.empty()) overrides[path] = FLAGS_##flag;
-  UNFOLD_CONFIG_KEYS(UNFOLD_COLLECT_KEY_FLAG)
-#undef UNFOLD_COLLECT_KEY_FLAG
-  return overrides;
-}
-
 int run() {
-  unfold::Options options = unfold::load_options(FLAGS_config, config_overrides());
+  unfold::Options options = unfold::load_options(FLAGS_config, config_flag_overrides());
   // E_geo (256 Dijkstras) costs more than the rest of the metrics together:
   // unfold computes it by default only up to this many tet vertices, unless
   // --metrics asks for the metrics or the limit is set (docs/usage.md).
@@ -120,9 +107,10 @@ int run() {
     if (!path.empty()) unfold::check_writable_destination(path);
   unfold::RenderOptions render;
   render.up_axis = unfold::axis_index(FLAGS_render_up, "--render_up");
-  if (FLAGS_render_color != "shading" && FLAGS_render_color != "rigidity")
+  if (FLAGS_render_color != "shading" && FLAGS_render_color != "rigidity" &&
+      FLAGS_render_color != "damage")
     throw unfold::UsageError("--render_color: '" + FLAGS_render_color +
-                             "' is not shading or rigidity");
+                             "' is not shading, rigidity or damage");
   if (FLAGS_render_color == "rigidity" && !unfold::computes_metric(options, "E_rig"))
     throw unfold::UsageError("--render_color rigidity needs E_rig in metrics.compute (--metrics)");
   if (FLAGS_render_skeleton &&
@@ -188,9 +176,10 @@ int run() {
                       unfold::render_beta_sweep(unfold::unfold_beta_sweep(result, options, sweep),
                                                 sweep, render));
   else if (!FLAGS_render.empty())
-    unfold::write_png(FLAGS_render,
-                      unfold::render_before_after(result, render, FLAGS_render_color == "rigidity",
-                                                  FLAGS_render_skeleton));
+    unfold::write_png(
+        FLAGS_render,
+        unfold::render_before_after(result, render, unfold::surface_coloring(FLAGS_render_color),
+                                    FLAGS_render_skeleton));
   outputs.commit();
   progress.finish();
 
@@ -205,14 +194,18 @@ int run() {
   };
   std::printf(
       "unfolded %d surface vertices (%d tet vertices, %d tets; %s route, %d intersecting face "
-      "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s\n",
+      "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s; damaged "
+      "surface edges %.3f %% (ratio outside [1/%g, %g]; ratio p99.9 %.2f, max %.2f, min %.3f), "
+      "%d inverted tets\n",
       int(result.surface.V.rows()), int(result.tets.V.rows()), int(result.tets.T.rows()),
       result.tet_report.route.c_str(), result.tet_report.num_intersecting_faces,
       result.seconds_prepare + result.seconds_unfold, metric("E_rig", m.E_rig).c_str(),
       metric("E_str", m.E_str).c_str(),
       m.E_geo_skipped.empty() ? metric("E_geo", m.E_geo).c_str() : m.E_geo_skipped.c_str(),
       result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,
-      result.cascade.reached_band ? "" : " (edge-ratio band not reached)");
+      result.cascade.reached_band ? "" : " (edge-ratio band not reached)",
+      m.damage.damaged_edges_percent, unfold::kDamagedEdgeRatio, unfold::kDamagedEdgeRatio,
+      m.damage.ratio_p999, m.damage.ratio_max, m.damage.ratio_min, m.inverted_tets);
   return 0;
 }
 

@@ -46,6 +46,10 @@
   X(integrate_weights, "integrate.weights", integrate.weights,                                     \
     "integrate.iterations: edge weights of the steps: uniform, or inverse_length (a spring's "     \
     "stiffness: a tet mesh's long chords do not stiffen its bending, docs/method.md)")             \
+  X(integrate_surface_edges, "integrate.surface_edges", integrate.surface_edges,                   \
+    "integrate.iterations: the surface's edges that no tet has join the steps, weighted by this "  \
+    "times their inverse length (the unfolded shape's tets leave some out, and without them "      \
+    "detail tears: docs/method.md); 0: the tets' edges alone")                                     \
   X(soften_scale, "soften.scale", soften.scale,                                                    \
     "soft joints: solve again from the solution with each ARAP edge's weight times "               \
     "1 / (1 + (k / (scale * median k))^2), k the turn of the solution's rotation field per unit "  \
@@ -150,4 +154,14 @@
   X(geodesic_max_vertices, "metrics.geodesic_max_vertices", geodesic_max_vertices,                 \
     "E_geo left out above this many tet vertices (0: no limit; unfold: 20000 unless --metrics "    \
     "is given)")                                                                                   \
+  X(match_mirror, "match.mirror", match.mirror,                                                    \
+    "unfold_match: auto: the mirror image of the rigid map only when it fits clearly better "      \
+    "(match.mirror_margin), else the rotation's; off: whichever fits best")                        \
+  X(match_mirror_margin, "match.mirror_margin", match.mirror_margin,                               \
+    "unfold_match: the mirror image wins below (1 - margin) times the rotation's ICP residual; "   \
+    "within the margin the decision is reported as ambiguous")                                     \
+  X(match_refine, "match.refine", match.refine,                                                    \
+    "unfold_match: zoomout (ZoomOut on the input surfaces' Laplace-Beltrami bases) or none")       \
+  X(match_spectral_size, "match.spectral_size", match.spectral_size,                               \
+    "unfold_match: eigenfunctions per shape, ZoomOut's final basis size")                          \
   X(threads, "threads", threads, "worker threads; 0 uses every core")

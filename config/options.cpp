@@ -178,6 +178,7 @@ Options::Options() {
   cascade.anderson = 5;
   integrate.iterations = 60;
   integrate.weights = "inverse_length";
+  integrate.surface_edges = 0.25;
   soften.scale = 2.0;
   energy.stretch_masses = "lumped";
 }
@@ -279,6 +280,8 @@ void validate_options(const Options& o) {
   require(o.soften.floor > 0 && o.soften.floor <= 1, "soften.floor", "must be in (0, 1]");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
+  require(std::isfinite(o.integrate.surface_edges) && o.integrate.surface_edges >= 0,
+          "integrate.surface_edges", "must be a finite number >= 0 (0 = the tets' edges alone)");
   require(std::isfinite(o.integrate.tolerance) && o.integrate.tolerance >= 0, "integrate.tolerance",
           "must be a finite number >= 0");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
@@ -344,6 +347,7 @@ void validate_options(const Options& o) {
   validate_ceres_options(o.ceres);
   validate_lsmds_options(o.lsmds);
   validate_scf_options(o.scf);
+  validate_match_options(o.match);
 }
 
 // Route conforming with shape auto asks for TetGen's own tets of the input.

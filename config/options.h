@@ -15,6 +15,7 @@
 #include "solvers/integrate_rotation_field.h"
 #include "solvers/local_global.h"
 #include "solvers/lsmds.h"
+#include "solvers/match_canonical_forms.h"
 #include "solvers/scf.h"
 #include "tetra/tetrahedralize.h"
 
@@ -63,6 +64,7 @@ struct Options {
   int geodesic_max_vertices = 0;
   StretchErrorOptions stretch_metric;
   GeodesicErrorOptions geodesic_metric;
+  MatchOptions match;  ///< unfold_match only (solvers/match_canonical_forms.h)
   int threads = 0;
 };
 

@@ -10,7 +10,7 @@
 namespace unfold {
 
 int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
-                       Eigen::MatrixX4i* T) {
+                       Eigen::MatrixX4i* T, const Eigen::MatrixXi* joined) {
   const int n = int(made.rows());
   if (rest.rows() != n)
     throw UsageError("drop_inverted_tets: the two positions have " + std::to_string(n) + " and " +
@@ -21,6 +21,10 @@ int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& res
   const Eigen::VectorXd before = tet_volumes(made, *T), after = tet_volumes(rest, *T);
   std::vector<char> keep(size_t(T->rows()));
   UnionFind parts(n);
+  if (joined)
+    for (Eigen::Index r = 0; r < joined->rows(); ++r)
+      for (Eigen::Index k = 1; k < joined->cols(); ++k)
+        parts.unite((*joined)(r, 0), (*joined)(r, k));
   for (Eigen::Index t = 0; t < T->rows(); ++t) {
     keep[size_t(t)] = !(before[t] * after[t] <= 0 && before[t] != 0);
     if (keep[size_t(t)])

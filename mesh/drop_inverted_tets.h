@@ -15,13 +15,15 @@ namespace unfold {
 /// the rest needs: an inverted tet is put back, least inverted first (its volume
 /// ratio rest / made nearest zero; ties in row order), when it joins
 /// vertices the kept tets leave in different parts, so that the vertices stay
-/// as connected as T had them (every vertex of T in some kept tet).
+/// as connected as T had them (with `joined`: as T and `joined` together).
 /// @param made positions T was made at (rows: vertices)
 /// @param rest positions T is used at, the same size
 /// @param T    tets (rows of corner indices), changed in place; the kept rows in order
+/// @param joined optional rows of vertices joined otherwise (e.g. the surface's
+///        triangles, when the solve has their edges): no tet is put back to join them
 /// @return how many tets were dropped
 /// @throws UsageError if the positions' sizes differ or a corner is out of range
 int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
-                       Eigen::MatrixX4i* T);
+                       Eigen::MatrixX4i* T, const Eigen::MatrixXi* joined = nullptr);
 
 }  // namespace unfold

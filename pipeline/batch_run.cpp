@@ -88,23 +88,40 @@ double parse_metric_field(const std::string& field) {
   return field.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(field);
 }
 
+const char* const kResultsHeader =
+    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
+    "surface_edge_ratio_max,inverted_tets,seconds,status";
+// results.csv before the damage columns (issue 44): still read.
+const char* const kResultsHeaderWithoutDamage =
+    "shape,class,method,E_rig,E_str,E_geo,seconds,status";
+
 std::string format_row(const BatchRow& r) {
   std::ostringstream s;
   s << std::setprecision(10) << csv_field(r.shape) << ',' << csv_field(r.shape_class) << ','
     << csv_field(r.method) << ',' << metric_field(r.E_rig) << ',' << metric_field(r.E_str) << ','
-    << metric_field(r.E_geo) << ',' << r.seconds << ',' << csv_field(r.status);
+    << metric_field(r.E_geo) << ',' << metric_field(r.damaged_edges_percent) << ','
+    << metric_field(r.surface_edge_ratio_p999) << ',' << metric_field(r.surface_edge_ratio_max)
+    << ',' << metric_field(r.inverted_tets) << ',' << r.seconds << ',' << csv_field(r.status);
   return s.str();
 }
 
+// A row of 12 fields, or of 8 (written before the damage columns).
 BatchRow parse_row(const std::string& line, const std::string& where) {
   const std::vector<std::string> f = split_csv_line(line);
-  if (f.size() != 8)
-    throw InputError(where + ": expected 8 fields, got " + std::to_string(f.size()));
-  BatchRow r{f[0], f[1], f[2], 0, 0, 0, 0, f[7]};
+  if (f.size() != 12 && f.size() != 8)
+    throw InputError(where + ": expected 12 fields, got " + std::to_string(f.size()));
+  const bool damage = f.size() == 12;
+  BatchRow r{f[0], f[1], f[2], 0, 0, 0, 0, f.back()};
   try {
     r.E_rig = parse_metric_field(f[3]), r.E_str = parse_metric_field(f[4]);
     r.E_geo = parse_metric_field(f[5]);
-    r.seconds = std::stod(f[6]);
+    if (damage) {
+      r.damaged_edges_percent = parse_metric_field(f[6]);
+      r.surface_edge_ratio_p999 = parse_metric_field(f[7]);
+      r.surface_edge_ratio_max = parse_metric_field(f[8]);
+      r.inverted_tets = parse_metric_field(f[9]);
+    }
+    r.seconds = std::stod(f[f.size() - 2]);
   } catch (const std::exception&) {
     throw InputError(where + ": a number field is not a number");
   }
@@ -183,6 +200,10 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
       OutputTransaction outputs;  // a config's files all or none; its row in any case
       row.seconds = seconds_since(start);
       row.E_rig = r.metrics.E_rig, row.E_str = r.metrics.E_str, row.E_geo = r.metrics.E_geo;
+      row.damaged_edges_percent = r.metrics.damage.damaged_edges_percent;
+      row.surface_edge_ratio_p999 = r.metrics.damage.ratio_p999;
+      row.surface_edge_ratio_max = r.metrics.damage.ratio_max;
+      row.inverted_tets = r.metrics.inverted_tets;
       write_surface_mesh(out.file(methods[k], shape, ".off"), r.canonical);
       if (r.surface.V.rows() != input.V.rows())
         write_surface_mesh(
@@ -541,7 +562,7 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
 
 void write_results_csv(const std::string& path, const std::vector<BatchRow>& rows) {
   write_file_atomically(path, [&](std::ostream& s) {
-    s << "shape,class,method,E_rig,E_str,E_geo,seconds,status\n";
+    s << kResultsHeader << '\n';
     for (const auto& r : rows) s << format_row(r) << '\n';
   });
 }
@@ -551,7 +572,7 @@ std::vector<BatchRow> read_results_csv(const std::string& path) {
   if (!in) throw InputError("cannot read " + path);
   std::string line;
   std::getline(in, line);
-  if (line.rfind("shape,class,method,E_rig,E_str,E_geo,seconds,status", 0) != 0)
+  if (line.rfind(kResultsHeader, 0) != 0 && line.rfind(kResultsHeaderWithoutDamage, 0) != 0)
     throw InputError(path + ": not a results.csv (header " + line + ")");
   std::vector<BatchRow> rows;
   for (int number = 2; std::getline(in, line); ++number)

@@ -17,6 +17,7 @@
 //   similarity_<method>_ort.csv (ORT), similarity_<method>_cmbof.csv (CMBOF)
 #pragma once
 
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -45,6 +46,13 @@ struct BatchRow {
   double E_rig = 0, E_str = 0, E_geo = 0;  ///< NaN: not computed (metrics.compute)
   double seconds = 0;  ///< the solve and metrics (unfold_prepared), not the shared preparation
   std::string status;  ///< "ok" or the error
+  /// The damage measure (metrics/surface_damage.h, UnfoldMetrics::damage) and
+  /// the inverted tets; NaN: unknown (a failed run, or a results.csv written
+  /// before these columns).
+  double damaged_edges_percent = std::numeric_limits<double>::quiet_NaN();
+  double surface_edge_ratio_p999 = std::numeric_limits<double>::quiet_NaN();
+  double surface_edge_ratio_max = std::numeric_limits<double>::quiet_NaN();
+  double inverted_tets = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The class of a shape: its name without trailing digits and then without
@@ -65,12 +73,16 @@ std::vector<std::string> list_meshes(const std::string& dir);
 ///         InputError for an unreadable input_dir, OutputError for output_dir
 std::vector<BatchRow> run_batch(const BatchOptions& options);
 
-/// Writes shape,class,method,E_rig,E_str,E_geo,seconds,status (atomically); a
-/// metric not computed (NaN) is an empty field, and reads back as NaN.
+/// Writes shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,
+/// surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,seconds,status
+/// (atomically); a metric not computed (NaN) is an empty field, and reads back
+/// as NaN.
 /// @throws OutputError
 void write_results_csv(const std::string& path, const std::vector<BatchRow>& rows);
 
-/// Reads a file written by write_results_csv. @throws InputError
+/// Reads a file written by write_results_csv, or by an earlier version without
+/// the damage columns (shape,class,method,E_rig,E_str,E_geo,seconds,status:
+/// those read as NaN). @throws InputError
 std::vector<BatchRow> read_results_csv(const std::string& path);
 
 /// Retrieval (retrieval.csv: method,framework,queries,nn,first_tier,

@@ -151,6 +151,61 @@ std::string pose_table(const std::vector<ReportRun>& runs, bool ratios) {
   return md.str();
 }
 
+// The damage measure of a row (metrics/surface_damage.h): 0 damaged-edge
+// percent, 1 the 99.9th percentile of the surface edge ratio, 2 the largest,
+// 3 inverted tets; NaN for a failed run or a results.csv without the columns.
+double damage(const BatchRow& r, int k) {
+  if (r.status != "ok") return std::nan("");
+  return k == 0   ? r.damaged_edges_percent
+         : k == 1 ? r.surface_edge_ratio_p999
+         : k == 2 ? r.surface_edge_ratio_max
+                  : r.inverted_tets;
+}
+
+// Issue 44's damage tables: per class and method, the mean of measure k over
+// the ok shapes that report it, and the worst shape (largest value) with its name.
+std::string damage_tables(const std::vector<BatchRow>& rows,
+                          const std::vector<std::string>& methods,
+                          const std::set<std::string>& classes) {
+  static const char* const kTitles[4] = {
+      "Damaged surface edges (% with length ratio outside [1/3, 3] at the input's area)",
+      "Surface edge ratio, 99.9th percentile (nearest rank)", "Largest surface edge ratio",
+      "Inverted tets in the output"};
+  static const char* const kFormats[4] = {"%.3f", "%.2f", "%.2f", "%.0f"};
+  std::vector<std::string> row_classes(classes.begin(), classes.end());
+  row_classes.push_back("all");
+  std::ostringstream md;
+  for (int k = 0; k < 4; ++k) {
+    md << "### " << kTitles[k]
+       << " per class: mean, worst shape (ok shapes that report it / all)\n\n"
+       << table_header({"class"}, methods);
+    for (const auto& c : row_classes) {
+      md << "| " << c << " |";
+      for (const auto& m : methods) {
+        double sum = 0, worst = -1;
+        std::string worst_shape;
+        int ok = 0, all = 0;
+        for (const auto& r : rows)
+          if (r.method == m && (c == "all" || r.shape_class == c)) {
+            ++all;
+            const double x = damage(r, k);
+            if (std::isnan(x)) continue;
+            sum += x, ++ok;
+            if (x > worst) worst = x, worst_shape = r.shape;
+          }
+        md << ' '
+           << (ok > 0 ? number(sum / ok, kFormats[k]) + " (worst " + number(worst, kFormats[k]) +
+                            " " + worst_shape + ")"
+                      : "-")
+           << " (" << ok << "/" << all << ") |";
+      }
+      md << '\n';
+    }
+    md << '\n';
+  }
+  return md.str();
+}
+
 }  // namespace
 
 std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
@@ -180,6 +235,7 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
     }
     md << '\n';
   }
+  md << damage_tables(rows, methods, classes);
   md << "### Failures\n\n";
   int failures = 0;
   for (const auto& r : rows)

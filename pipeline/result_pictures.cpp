@@ -6,14 +6,26 @@
 
 namespace unfold {
 
+SurfaceColoring surface_coloring(const std::string& name) {
+  if (name == "shading") return SurfaceColoring::kShading;
+  if (name == "rigidity") return SurfaceColoring::kRigidity;
+  if (name == "damage") return SurfaceColoring::kDamage;
+  throw UsageError("'" + name + "' is not shading, rigidity or damage");
+}
+
 Image render_before_after(const UnfoldResult& result, const RenderOptions& options,
-                          bool color_by_rigidity, bool draw_skeleton) {
+                          SurfaceColoring coloring, bool draw_skeleton) {
   const Eigen::MatrixX3i F = triangulate_faces(result.surface);
   RenderPanel before{"input", result.surface.V, F, {}};
   RenderPanel after{"canonical", result.canonical.V, F, {}};
-  if (color_by_rigidity) {
+  if (coloring == SurfaceColoring::kRigidity) {
     after.title = "canonical: rigidity error";
     after.values = result.metrics.rigidity_per_vertex.head(result.canonical.V.rows());
+  } else if (coloring == SurfaceColoring::kDamage) {
+    if (result.metrics.damage.per_vertex.size() != result.canonical.V.rows())
+      throw UsageError("render_before_after: the result has no per-vertex damage");
+    after.title = "canonical: edge damage";
+    after.values = result.metrics.damage.per_vertex;
   }
   if (draw_skeleton) {
     const CurveSkeleton& s = result.skeleton;

@@ -1,6 +1,7 @@
 // Pictures of unfolding results: before/after, and a beta sweep side by side.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "pipeline/unfold_surface.h"
@@ -8,15 +9,26 @@
 
 namespace unfold {
 
+/// How render_before_after colours the canonical surface (--render_color).
+enum class SurfaceColoring {
+  kShading,   ///< plain shading
+  kRigidity,  ///< each vertex's rigidity error (E_rig's term)
+  kDamage,    ///< each vertex's edge damage: metrics.damage.per_vertex, the largest |ln r|
+};
+
+/// "shading", "rigidity" or "damage". @throws UsageError for another name
+SurfaceColoring surface_coloring(const std::string& name);
+
 /// The unfolded surface before (left half) and after (right half), side and top
 /// views, same cameras and scale in both halves.
-/// @param color_by_rigidity colour the canonical surface by each vertex's
-///        rigidity error (E_rig's term; the input stays plainly shaded)
+/// @param coloring colour the canonical surface by a per-vertex value (the
+///        input stays plainly shaded)
 /// @param draw_skeleton draw the curve skeleton over the input and the
 ///        straightened one over the canonical surface (method scf)
 /// @throws UsageError for bad render options, or draw_skeleton without a skeleton
 Image render_before_after(const UnfoldResult& result, const RenderOptions& options,
-                          bool color_by_rigidity = false, bool draw_skeleton = false);
+                          SurfaceColoring coloring = SurfaceColoring::kShading,
+                          bool draw_skeleton = false);
 
 /// The input surface, then one column per run of a beta sweep (unfold_beta_sweep),
 /// titled with beta relative to n / lambda_2.

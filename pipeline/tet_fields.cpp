@@ -18,6 +18,13 @@ TetMeshFields canonical_tet_fields(const UnfoldResult& result) {
   if (!std::isnan(result.metrics.E_rig))  // E_rig computed (metrics.compute)
     fields.per_vertex.insert(fields.per_vertex.begin(),
                              {"rigidity_error", result.metrics.rigidity_per_vertex});
+  // The surface edges' damage on the surface vertices (the first rows), 0 inside.
+  const Eigen::VectorXd& damage = result.metrics.damage.per_vertex;
+  if (damage.size() > 0 && damage.size() <= P.rows()) {
+    Eigen::VectorXd edge_damage = Eigen::VectorXd::Zero(P.rows());
+    edge_damage.head(damage.size()) = damage;
+    fields.per_vertex.push_back({"edge_damage", edge_damage});
+  }
   fields.per_tet = {{"volume_ratio", tets.volume_ratio}, {"rigidity", tets.rigidity}};
   return fields;
 }

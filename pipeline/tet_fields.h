@@ -8,8 +8,10 @@
 namespace unfold {
 
 /// Fields of a finished run: per vertex "rigidity_error" (E_rig's term,
-/// metrics.rigidity_per_vertex; only when E_rig was computed) and "stretch_ratio"
-/// (vertex_edge_ratio); per tet "volume_ratio" and "rigidity" (tet_deformation).
+/// metrics.rigidity_per_vertex; only when E_rig was computed), "stretch_ratio"
+/// (vertex_edge_ratio) and "edge_damage" (metrics.damage.per_vertex on the
+/// surface vertices: the largest |ln r| of their surface edges; 0 on interior
+/// vertices); per tet "volume_ratio" and "rigidity" (tet_deformation).
 /// @param result a result of unfold_surface / unfold_prepared
 /// @throws InputError if a rest tet or edge is degenerate
 TetMeshFields canonical_tet_fields(const UnfoldResult& result);

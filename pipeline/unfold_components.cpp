@@ -160,6 +160,10 @@ UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Opti
   UnfoldResult merged = merge_results(parts, merged_vertex_maps(components, parts, simplified));
   // Unsimplified, the merged surface is the input itself, faces in input order.
   if (!simplified) merged.surface.faces = merged.canonical.faces = surface.faces;
+  // The damage measure over the merged surface, as over any output surface
+  // (one area scale for the whole; per vertex, the merged surface's vertices).
+  merged.metrics.damage =
+      surface_damage(merged.surface.V, merged.canonical.V, merged.surface.faces);
   return merged;
 }
 

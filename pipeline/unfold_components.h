@@ -16,7 +16,8 @@ namespace unfold {
 /// (positions, metrics.rigidity_per_vertex) is the parts' fields put in those
 /// places. Combined figures: E_rig the mean of the merged per-vertex terms,
 /// the edge ratio an edge-weighted mean, E_str and E_geo means weighted by tet
-/// vertices (pairs across components are not compared), lambda2 and
+/// vertices (pairs across components are not compared), the damage measure
+/// (metrics.damage) computed anew on the merged surface, lambda2 and
 /// beta_start the smallest of the parts, iterations, inverted tets and times
 /// sums; each part's warnings are listed with its component number.
 /// @param surface a surface that passes check_surface_mesh(surface, false)

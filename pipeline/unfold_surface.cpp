@@ -18,6 +18,7 @@
 #include "mesh/lumped_masses.h"
 #include "mesh/simplify_surface_mesh.h"
 #include "mesh/sort_interior_vertices.h"
+#include "mesh/tet_and_surface_edge_graph.h"
 #include "mesh/tet_volumes.h"
 #include "metrics/edge_ratio.h"
 #include "metrics/geodesic_error.h"
@@ -269,6 +270,36 @@ void solve_on_surface(const EdgeGraph& tet_graph, const Options& options,
   result.seconds_interior = seconds_since(interior_start);
 }
 
+// The edges every stage after the tets are made solves on: the tets' (the
+// triangles' without tets), joined with the surface's when `surface_weight` > 0
+// (integrate.surface_edges, mesh/tet_and_surface_edge_graph.h); then
+// `integrate_factors` gives the integration's weight factor of each edge:
+// `surface_weight` on the surface's edges that no tet has, else 1. The
+// metrics measure on the same edges: the paper's tets (TetGen's, conforming)
+// have every surface edge too.
+EdgeGraph solve_graph(const UnfoldResult& result, double surface_weight,
+                      std::vector<double>* integrate_factors, std::vector<std::string>* warnings) {
+  const TetMesh& tets = result.tets;
+  integrate_factors->clear();
+  if (tets.T.rows() == 0)
+    return build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(triangulate_faces(result.surface)));
+  if (!(surface_weight > 0)) return build_edge_graph(int(tets.V.rows()), Eigen::MatrixXi(tets.T));
+  int zero_length = 0;
+  std::vector<char> surface_only;
+  EdgeGraph graph = tet_and_surface_edge_graph(tets.V, tets.T, triangulate_faces(result.surface),
+                                               &surface_only, &zero_length);
+  if (zero_length > 0) {
+    warnings->push_back(std::to_string(zero_length) +
+                        " tet edges join vertices that coincide in the input and share no "
+                        "triangle (a contact): left out of the solve");
+    LOG(WARNING) << warnings->back();
+  }
+  integrate_factors->resize(surface_only.size());
+  for (size_t e = 0; e < surface_only.size(); ++e)
+    (*integrate_factors)[e] = surface_only[e] ? surface_weight : 1.0;
+  return graph;
+}
+
 // The integration's anchor unit (integrate_cascade_rotations).
 double surface_lambda2(const SurfaceMesh& surface) {
   return fiedler_value(graph_laplacian(
@@ -293,7 +324,9 @@ std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldR
   // itself somewhere, and one route for every pose keeps the poses' tets alike.
   TetOptions tet = options.tet;
   if (tet.route == "auto") tet.route = "robust";
-  UnfoldedTetMesh unfolded = tetrahedralize_unfolded(result.surface, result.cascade.positions, tet);
+  UnfoldedTetMesh unfolded =
+      tetrahedralize_unfolded(result.surface, result.cascade.positions, tet,
+                              integrates && options.integrate.surface_edges > 0);
   result.tets = std::move(unfolded.rest);
   result.tet_report = unfolded.report;
   result.tet_report.seconds = seconds_since(start);
@@ -313,13 +346,13 @@ std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldR
 // it is the same for every pose of a shape (the tet mesh's is not) and for
 // every arap.weight and arap.weights (the cascade's lambda_2 is not):
 // `lambda2` is surface_lambda2(result.surface).
-void integrate_cascade_rotations(const EdgeGraph& graph, const Options& options, double lambda2,
-                                 UnfoldResult* out) {
+void integrate_cascade_rotations(const EdgeGraph& graph, const std::vector<double>& edge_factors,
+                                 const Options& options, double lambda2, UnfoldResult* out) {
   UnfoldResult& result = *out;
   CascadeResult& c = result.cascade;
   IntegrateTimes times;
   c.positions = integrate_rotation_field(graph, result.tets.V, c.positions, lambda2,
-                                         options.integrate, &times);
+                                         options.integrate, &times, edge_factors);
   result.seconds_integration = times.integration;
   result.seconds_anchored = times.anchored;
   c.edge_ratio = edge_ratio(graph, result.tets.V, c.positions);
@@ -523,10 +556,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
     result.tet_report.contact_face_pairs = prepared.tet_report.contact_face_pairs;
     result.tet_report.contact_bridge = contact_bridge;
   }
-  const EdgeGraph graph = build_edge_graph(
-      int(result.tets.V.rows()), result.tets.T.rows() > 0
-                                     ? Eigen::MatrixXi(result.tets.T)
-                                     : Eigen::MatrixXi(triangulate_faces(result.surface)));
+  std::vector<double> integrate_factors;
+  const EdgeGraph graph = solve_graph(result, integrates ? options.integrate.surface_edges : 0.0,
+                                      &integrate_factors, &result.warnings);
   check_tet_graph(graph, result.tets.V);
   result.num_edges = graph.num_edges();
   std::future<GeodesicRows> geodesic_rows = start_geodesic_rows(graph, result.tets.V, options);
@@ -542,8 +574,9 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
     solve_cascade(graph, result.tets, options, &result);
   }
   if (integrates)
-    integrate_cascade_rotations(
-        graph, options, lambda2.valid() ? lambda2.get() : surface_lambda2(result.surface), &result);
+    integrate_cascade_rotations(graph, integrate_factors, options,
+                                lambda2.valid() ? lambda2.get() : surface_lambda2(result.surface),
+                                &result);
   result.seconds_unfold = seconds_since(start);
   if (!result.cascade.reached_band)
     result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
@@ -590,6 +623,7 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   m.inverted_tets = count_inverted_tets(
       result.unfolded_tet_positions.rows() > 0 ? result.unfolded_tet_positions : P, Q,
       result.tets.T);
+  m.damage = surface_damage(result.surface.V, result.canonical.V, result.surface.faces);
   m.seconds = seconds_since(metrics_start);
   return result;
 }

@@ -9,6 +9,7 @@
 #include "mesh/curve_skeleton.h"
 #include "mesh/surface_mesh.h"
 #include "mesh/tet_mesh.h"
+#include "metrics/surface_damage.h"
 #include "solvers/cascade.h"
 #include "solvers/local_global.h"
 #include "tetra/tetrahedralize.h"
@@ -27,6 +28,9 @@ struct UnfoldMetrics {
   /// metrics.geodesic_max_vertices) and how to ask for it; empty otherwise
   std::string E_geo_skipped;
   int inverted_tets = 0;  ///< tetrahedra whose orientation flipped (from how they were made)
+  /// the canonical surface's edges against the input's at its area
+  /// (metrics/surface_damage.h): always computed, whatever metrics.compute lists
+  SurfaceDamage damage;
   double seconds = 0;
   /// E_rig's term of each tet vertex (RigidityError); NaN when E_rig is not computed
   Eigen::VectorXd rigidity_per_vertex;

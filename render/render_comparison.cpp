@@ -49,8 +49,9 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
     for (size_t col = 0; col < panels.size(); ++col) {
       const RenderPanel& p = panels[col];
       Canvas canvas(w, h, {255, 255, 255});
-      const Eigen::MatrixX3f colors =
-          p.values.size() ? color_map(p.values, 0, value_max) : Eigen::MatrixX3f();
+      const Eigen::MatrixX3f colors = p.colors.rows()   ? p.colors
+                                      : p.values.size() ? color_map(p.values, 0, value_max)
+                                                        : Eigen::MatrixX3f();
       render_mesh(p.V, p.F, colors, views[row], scale, options.shading, &canvas);
       if (p.lines.rows() > 0) {
         const Eigen::MatrixX3d ends = project_in_frame(p.line_points, p.V, views[row], scale, w, h);

@@ -17,6 +17,8 @@ struct RenderPanel {
   Eigen::MatrixX3d V;
   Eigen::MatrixX3i F;      ///< triangles
   Eigen::VectorXd values;  ///< per-vertex values to colour by, or empty for plain shading
+  /// per-vertex RGB colours in [0, 1] (V.rows() x 3), drawn instead of `values` when not empty
+  Eigen::MatrixX3f colors{};
   /// line segments drawn over the shaded mesh (not hidden by it), e.g. a
   /// skeleton inside it: endpoints line_points.row(lines(k, 0)) and (lines(k, 1))
   Eigen::MatrixX3d line_points{};

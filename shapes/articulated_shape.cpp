@@ -12,6 +12,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -40,6 +41,7 @@ enum Bone {
   kHindLeftLower,
   kHindRightUpper,
   kHindRightLower,
+  kJaw,  // the mouth head's lower jaw; last, so the plain animal's bones keep their order
   kNumBones
 };
 const std::array<int, kNumBones> kParent = {-1,
@@ -54,9 +56,17 @@ const std::array<int, kNumBones> kParent = {-1,
                                             kBody,
                                             kHindLeftUpper,
                                             kBody,
-                                            kHindRightUpper};
+                                            kHindRightUpper,
+                                            kHead};
 
 constexpr double kLegX = 0.6, kLegY = 0.25, kHipZ = -0.25, kKneeZ = -0.85, kFootZ = -1.4;
+
+// The mouth head's jaw hinge (an axis along y): both faces of the mouth slot
+// are planes through it, the upper one horizontal, so raising the jaw by
+// kMouthOpenDegrees lays the lower face onto the upper one.
+const Vector3d kHinge(1.5, 0, 0.72);
+// ShapePose::closed_mouth's jaw_pitch (degrees).
+constexpr double kClosedJawPitch = 30;
 
 Vector3d joint(int bone) {
   switch (bone) {
@@ -68,6 +78,8 @@ Vector3d joint(int bone) {
       return {-1.1, 0, 0.2};
     case kTailTip:
       return {-1.5, 0, 0.4};
+    case kJaw:
+      return kHinge;
     default:
       break;
   }
@@ -83,16 +95,37 @@ struct Capsule {
   double ra, rb;
 };
 
-std::vector<Capsule> capsules() {
+Eigen::Matrix3d rot(double degrees, const Vector3d& axis) {
+  return Eigen::AngleAxisd(degrees * M_PI / 180, axis).toRotationMatrix();
+}
+
+// The lower jaw's rest position: its closed position turned down about the hinge.
+Vector3d open_jaw(const Vector3d& closed) {
+  return kHinge + rot(kMouthOpenDegrees, Vector3d::UnitY()) * (closed - kHinge);
+}
+
+// The plain animal's parts, or with `mouth` the head with a mouth: cranium,
+// upper jaw and lower jaw (open) instead of head and snout. The jaws' cross
+// sections on the mouth plane nearly match, so the lips meet all round.
+std::vector<Capsule> capsules(bool mouth) {
   std::vector<Capsule> c = {
       {kBody, {-0.8, 0, 0}, {0.8, 0, 0}, 0.4, 0.4},
       {kNeck, joint(kNeck), joint(kHead), 0.18, 0.15},
-      {kHead, {1.42, 0, 0.82}, {1.42, 0, 0.82}, 0.24, 0.24},
-      {kHead, {1.42, 0, 0.82}, {1.8, 0, 0.72}, 0.16, 0.11},
+  };
+  if (mouth) {
+    c.push_back({kHead, {1.42, 0, 0.82}, {1.42, 0, 0.82}, 0.24, 0.24});
+    c.push_back({kHead, {1.48, 0, 0.77}, {1.86, 0, 0.755}, 0.14, 0.1});
+    c.push_back({kJaw, open_jaw({1.48, 0, 0.7}), open_jaw({1.84, 0, 0.7}), 0.11, 0.085});
+  } else {
+    c.push_back({kHead, {1.42, 0, 0.82}, {1.42, 0, 0.82}, 0.24, 0.24});
+    c.push_back({kHead, {1.42, 0, 0.82}, {1.8, 0, 0.72}, 0.16, 0.11});
+  }
+  const std::vector<Capsule> tail = {
       {kTail, joint(kTail), joint(kTailTip), 0.1, 0.085},
       {kTailTip, joint(kTailTip), {-1.9, 0, 0.5}, 0.085, 0.07},
   };
-  for (int upper = kFrontLeftUpper; upper < kNumBones; upper += 2) {
+  c.insert(c.end(), tail.begin(), tail.end());
+  for (int upper = kFrontLeftUpper; upper <= kHindRightUpper; upper += 2) {
     const Vector3d foot(joint(upper).x(), joint(upper).y(), kFootZ);
     c.push_back({upper, joint(upper), joint(upper + 1), 0.14, 0.12});
     c.push_back({upper + 1, joint(upper + 1), foot, 0.12, 0.1});
@@ -111,6 +144,38 @@ double capsule_distance(const Capsule& c, const Vector3d& x) {
 double smooth_min(double a, double b, double k) {
   const double h = std::max(k - std::abs(a - b), 0.0) / k;
   return std::min(a, b) - h * h * k / 4;
+}
+
+double smooth_max(double a, double b, double k) { return -smooth_min(-a, -b, k); }
+
+// Signed distance to the mouth slot, in its rest (open) position: a wedge of
+// angle kMouthOpenDegrees between two planes through the hinge, infinite
+// along y and forward, its back rounded to a radius of kSlotRadius so the slot
+// never gets thinner than the marching grid resolves (a thinner slit would
+// break up into bubbles).
+double mouth_slot_distance(const Vector3d& x) {
+  constexpr double kSlotRadius = 0.035;
+  const double half = kMouthOpenDegrees / 2 * M_PI / 180;
+  // In the x-z plane: u along the bisector (forward, down), v across it.
+  const Eigen::Vector2d b(std::cos(half), -std::sin(half)), n(std::sin(half), std::cos(half));
+  // The sharp wedge whose offset by kSlotRadius has its faces through the hinge.
+  const Eigen::Vector2d p(x.x() - kHinge.x(), x.z() - kHinge.z());
+  const double u = p.dot(b) - kSlotRadius / std::sin(half), v = std::abs(p.dot(n));
+  const double along_face = u * std::cos(half) + v * std::sin(half);
+  const double d = along_face < 0 ? std::hypot(u, v) : v * std::cos(half) - u * std::sin(half);
+  return d - kSlotRadius;
+}
+
+// Signed distance (approximate) to the pocket carved behind the lips: a
+// flattened ellipsoid on the slot's bisector, deeper than the slot, so that
+// with the jaw closed a thin cavity remains inside the ring where the lips touch.
+double mouth_pocket_distance(const Vector3d& x) {
+  const double half = kMouthOpenDegrees / 2 * M_PI / 180;
+  const Vector3d b(std::cos(half), 0, -std::sin(half)), n(std::sin(half), 0, std::cos(half));
+  const Vector3d p = x - (kHinge + 0.22 * b);
+  const Vector3d radii(0.11, 0.055, 0.075);
+  const Vector3d q(p.dot(b) / radii.x(), p.y() / radii.y(), p.dot(n) / radii.z());
+  return (q.norm() - 1) * radii.minCoeff();
 }
 
 struct RestShape {
@@ -162,12 +227,13 @@ SurfaceMesh stored_rest_surface() {
   return mesh;
 }
 
-RestShape build_rest_shape(int resolution) {
-  const std::vector<Capsule> parts = capsules();
+RestShape build_rest_shape(int resolution, bool mouth) {
+  const std::vector<Capsule> parts = capsules(mouth);
   const double edge = rest_grid(parts, resolution).edge;
   RestShape rest;
-  rest.mesh = resolution == kDefaultShapeResolution ? stored_rest_surface()
-                                                    : mesh_articulated_rest_surface(resolution);
+  rest.mesh = resolution == kDefaultShapeResolution && !mouth
+                  ? stored_rest_surface()
+                  : mesh_articulated_rest_surface(resolution, mouth);
   const int n = int(rest.mesh.V.rows());
 
   // Skinning weights: each vertex starts fully on the bone of its nearest
@@ -200,10 +266,6 @@ RestShape build_rest_shape(int resolution) {
   return rest;
 }
 
-Eigen::Matrix3d rot(double degrees, const Vector3d& axis) {
-  return Eigen::AngleAxisd(degrees * M_PI / 180, axis).toRotationMatrix();
-}
-
 // The rotation of each bone about its joint, relative to its parent.
 std::array<Eigen::AngleAxisd, kNumBones> joint_rotations(const ShapePose& p) {
   const Vector3d X = Vector3d::UnitX(), Y = Vector3d::UnitY(), Z = Vector3d::UnitZ();
@@ -213,6 +275,7 @@ std::array<Eigen::AngleAxisd, kNumBones> joint_rotations(const ShapePose& p) {
   R[kHead] = rot(p.head_pitch, -Y);
   R[kTail] = rot(p.tail_yaw, -Z) * rot(p.tail_pitch, Y);
   R[kTailTip] = rot(p.tail_tip_yaw, -Z);
+  R[kJaw] = rot(p.jaw_pitch, -Y);
   const std::array<const LegPose*, 4> legs = {&p.front_left, &p.front_right, &p.hind_left,
                                               &p.hind_right};
   for (int leg = 0; leg < 4; ++leg) {
@@ -229,12 +292,18 @@ std::array<Eigen::AngleAxisd, kNumBones> joint_rotations(const ShapePose& p) {
 
 }  // namespace
 
-SurfaceMesh mesh_articulated_rest_surface(int resolution) {
+SurfaceMesh mesh_articulated_rest_surface(int resolution, bool mouth) {
   check_resolution(resolution);
-  const std::vector<Capsule> parts = capsules();
-  const ImplicitFunction field = [&parts](const Vector3d& x) {
+  const std::vector<Capsule> parts = capsules(mouth);
+  const ImplicitFunction field = [&parts, mouth](const Vector3d& x) {
     double d = std::numeric_limits<double>::infinity();
     for (const Capsule& c : parts) d = smooth_min(d, capsule_distance(c, x), 0.06);
+    if (mouth) {
+      // Carved out: the slot between the jaws and the pocket behind the lips.
+      constexpr double kFillet = 0.03;
+      d = smooth_max(d, -mouth_slot_distance(x), kFillet);
+      d = smooth_max(d, -mouth_pocket_distance(x), kFillet);
+    }
     return d;
   };
   const RestGrid grid = rest_grid(parts, resolution);
@@ -249,16 +318,33 @@ int ShapePose::num_presets() { return 3; }
 
 ShapePose ShapePose::named(const std::string& name) {
   if (name == "rest") return rest();
+  if (name == "mouth") return closed_mouth();
+  if (name == "mouth_open") return open_mouth();
   for (int k = 0; k < num_presets(); ++k)
     if (name == std::to_string(k)) return preset(k);
   for (int k = 0; k < num_contact_poses(); ++k)
     if (name == "contact" + std::to_string(k)) return contact(k);
   throw UsageError("unknown pose '" + name + "' (use rest, a preset index 0.." +
-                   std::to_string(num_presets() - 1) + " or contact0..contact" +
-                   std::to_string(num_contact_poses() - 1) + ")");
+                   std::to_string(num_presets() - 1) + ", contact0..contact" +
+                   std::to_string(num_contact_poses() - 1) + ", mouth or mouth_open)");
 }
 
 int ShapePose::num_contact_poses() { return 2; }
+
+ShapePose ShapePose::closed_mouth() {
+  ShapePose p;
+  p.mouth = true;
+  // More than kMouthOpenDegrees: the skinning weights blend the jaw into the
+  // head near the hinge, and the lips are to press slightly into each other.
+  p.jaw_pitch = kClosedJawPitch;
+  return p;
+}
+
+ShapePose ShapePose::open_mouth() {
+  ShapePose p;
+  p.mouth = true;
+  return p;
+}
 
 ShapePose ShapePose::contact(int k) {
   ShapePose p;
@@ -317,14 +403,16 @@ ShapePose ShapePose::preset(int k) {
 
 SurfaceMesh make_articulated_shape(const ShapePose& pose, int resolution) {
   check_resolution(resolution);
+  if (pose.jaw_pitch != 0 && !pose.mouth)
+    throw UsageError("make_articulated_shape: jaw_pitch needs the head with a mouth (mouth)");
   // Meshing the rest shape dominates the cost; poses of one resolution share it.
   static std::mutex mutex;
-  static std::map<int, std::shared_ptr<const RestShape>> cache;
+  static std::map<std::pair<int, bool>, std::shared_ptr<const RestShape>> cache;
   std::shared_ptr<const RestShape> cached;
   {
     const std::lock_guard<std::mutex> lock(mutex);
-    auto& slot = cache[resolution];
-    if (!slot) slot = std::make_shared<const RestShape>(build_rest_shape(resolution));
+    auto& slot = cache[{resolution, pose.mouth}];
+    if (!slot) slot = std::make_shared<const RestShape>(build_rest_shape(resolution, pose.mouth));
     cached = slot;
   }
   const RestShape& rest = *cached;

@@ -2,6 +2,8 @@
 // four two-segment legs, two-segment tail) posed by joint angles, so demos and
 // tests need no downloaded data. All poses of one resolution share the same
 // connectivity and vertex order: vertex i is the same body point in every pose.
+// On request (ShapePose::mouth) the head has a mouth and a lower jaw instead:
+// another surface, whose poses share their own connectivity.
 #pragma once
 
 #include <string>
@@ -18,6 +20,9 @@ struct LegPose {
   double knee = 0;  ///< about the knee's left-right axis; > 0 moves the foot backward (-x)
 };
 
+/// Degrees the mouth head's lower jaw is open at rest (jaw_pitch 0).
+constexpr double kMouthOpenDegrees = 25;
+
 /// Joint angles of the animal, in degrees. The animal faces +x, up is +z and
 /// its left side is +y. All zeros is the rest pose: legs straight down, neck
 /// and tail straight.
@@ -29,6 +34,12 @@ struct ShapePose {
   double tail_yaw = 0;      ///< > 0 swings the tail to the left
   double tail_tip_yaw = 0;  ///< > 0 swings the tail's outer half to the left
   LegPose front_left, front_right, hind_left, hind_right;
+  /// The head with a mouth: a slot between the upper and a lower jaw, open by
+  /// kMouthOpenDegrees at rest, with a pocket behind the lips. Another surface
+  /// (other vertices and faces) than without, so existing users see no change.
+  bool mouth = false;
+  /// > 0 raises the lower jaw about its hinge (closes the mouth); needs `mouth`.
+  double jaw_pitch = 0;
 
   /// The canonical-looking pose: every angle zero.
   static ShapePose rest();
@@ -47,8 +58,17 @@ struct ShapePose {
   static ShapePose contact(int k);
   /// Number of contact poses.
   static int num_contact_poses();
-  /// "rest", a preset index ("0", "1", ...) or a contact pose ("contact0",
-  /// ...), as command lines name poses.
+  /// The mouth head closed as real scans' mouths are (TOSCA's cats, people):
+  /// the jaw raised until the lips touch, pressed slightly into each other
+  /// along the front, a thin cavity left behind them; the body at rest. Its
+  /// surface intersects itself at the lips; upper and lower lip are near in
+  /// space but far apart along the surface.
+  static ShapePose closed_mouth();
+  /// The mouth head at rest: the mouth open by kMouthOpenDegrees.
+  static ShapePose open_mouth();
+  /// "rest", a preset index ("0", "1", ...), a contact pose ("contact0",
+  /// ...), "mouth" (closed_mouth) or "mouth_open" (open_mouth), as command
+  /// lines name poses.
   /// @throws UsageError for any other name
   static ShapePose named(const std::string& name);
 };
@@ -60,8 +80,10 @@ constexpr int kDefaultShapeResolution = 64;
 /// of tapered capsules): seconds of work, so make_articulated_shape uses a
 /// stored copy at kDefaultShapeResolution (articulated_rest_surface_64.inc,
 /// checked against this by tests/shape_test.cpp, which also regenerates it).
+/// With `mouth`, the rest surface of the head with a mouth (ShapePose::mouth),
+/// never stored: meshed on first use and cached by make_articulated_shape.
 /// @throws UsageError for a resolution out of [16, 128]
-SurfaceMesh mesh_articulated_rest_surface(int resolution);
+SurfaceMesh mesh_articulated_rest_surface(int resolution, bool mouth = false);
 
 /// The animal in `pose`: a closed, 2-manifold, single-component, outward
 /// oriented triangle mesh. The rest shape is a smooth union of tapered capsules
@@ -71,9 +93,10 @@ SurfaceMesh mesh_articulated_rest_surface(int resolution);
 /// angle, fractions blended smoothly across joints), so connectivity and vertex
 /// order never depend on the pose. Self-intersection free for the rest pose and
 /// presets; large angles may make limbs collide. Deterministic.
+/// The mouth head (pose.mouth) is another rest surface, shared by its poses.
 /// @param resolution target edge count along the body's length (about
 ///                   resolution^2 vertices), in [16, 128]
-/// @throws UsageError for a resolution out of range
+/// @throws UsageError for a resolution out of range, or a jaw_pitch without mouth
 SurfaceMesh make_articulated_shape(const ShapePose& pose, int resolution = kDefaultShapeResolution);
 
 }  // namespace unfold

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/errors.h"
@@ -19,19 +20,34 @@
 namespace unfold {
 namespace {
 
-// Per edge of the graph: 1, or 1 / rest length scaled to mean 1.
+// Edge factors: none, or one finite positive number per edge.
+void check_edge_factors(const EdgeGraph& graph, const ArapSolveOptions& options,
+                        const char* caller) {
+  const auto& f = options.edge_factors;
+  if (f.empty()) return;
+  bool ok = f.size() == size_t(graph.num_edges());
+  for (const double x : f) ok = ok && std::isfinite(x) && x > 0;
+  if (!ok)
+    throw UsageError(std::string(caller) + ": edge_factors needs one finite factor > 0 per edge (" +
+                     std::to_string(graph.num_edges()) + "), got " + std::to_string(f.size()));
+}
+
+// Per edge of the graph: 1, or 1 / rest length scaled to mean 1; times the
+// options' edge factors, if any.
 std::vector<double> edge_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                 bool inverse_length) {
+                                 const ArapSolveOptions& options) {
   std::vector<double> w(size_t(graph.num_edges()), 1.0);
-  if (!inverse_length || graph.num_edges() == 0) return w;
-  double sum = 0;
-  for (int e = 0; e < graph.num_edges(); ++e) {
-    // Coincident rest positions (a degenerate input) weigh as the shortest edge does.
-    w[size_t(e)] = 1 / std::max((P.row(graph.edges(e, 0)) - P.row(graph.edges(e, 1))).norm(),
-                                std::numeric_limits<double>::min());
-    sum += w[size_t(e)];
+  if (options.inverse_length_weights && graph.num_edges() > 0) {
+    double sum = 0;
+    for (int e = 0; e < graph.num_edges(); ++e) {
+      // Coincident rest positions (a degenerate input) weigh as the shortest edge does.
+      w[size_t(e)] = 1 / std::max((P.row(graph.edges(e, 0)) - P.row(graph.edges(e, 1))).norm(),
+                                  std::numeric_limits<double>::min());
+      sum += w[size_t(e)];
+    }
+    for (double& x : w) x *= graph.num_edges() / sum;
   }
-  for (double& x : w) x *= graph.num_edges() / sum;
+  for (size_t e = 0; e < options.edge_factors.size(); ++e) w[e] *= options.edge_factors[e];
   return w;
 }
 
@@ -59,9 +75,10 @@ std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
   const int m = graph.num_vertices - options.num_fixed;
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
   // to held vertices go to the right side.
-  Eigen::SparseMatrix<double> L =
-      (options.inverse_length_weights ? weighted_laplacian(graph, weights) : graph_laplacian(graph))
-          .bottomRightCorner(m, m);
+  Eigen::SparseMatrix<double> L = (options.inverse_length_weights || !options.edge_factors.empty()
+                                       ? weighted_laplacian(graph, weights)
+                                       : graph_laplacian(graph))
+                                      .bottomRightCorner(m, m);
   if (options.anchor > 0) {
     Eigen::SparseMatrix<double> I(m, m);
     I.setIdentity();
@@ -87,8 +104,8 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
   if (P.rows() != n || num_fixed < 1 || num_fixed >= n)
     throw UsageError(
         "arap_factorization: need P with one row per graph vertex and 1 to n - 1 held");
-  return factorize_free_block(graph, edge_weights(graph, P, options.inverse_length_weights),
-                              options);
+  check_edge_factors(graph, options, "arap_factorization");
+  return factorize_free_block(graph, edge_weights(graph, P, options), options);
 }
 
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
@@ -99,10 +116,11 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   if (options.max_iterations < 0 || !(options.tolerance >= 0) || !(options.anchor >= 0) ||
       options.anderson < 0)
     throw UsageError("arap_solve: max_iterations, tolerance, anchor and anderson must be >= 0");
+  check_edge_factors(graph, options, "arap_solve");
   if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
   report_stage("ARAP steps, " + std::to_string(m) + " free vertices" +
                (options.anchor > 0 ? ", anchored" : ""));
-  const std::vector<double> weights = edge_weights(graph, P, options.inverse_length_weights);
+  const std::vector<double> weights = edge_weights(graph, P, options);
   std::unique_ptr<SparseLdlt> own;
   if (!factor) {
     own = factorize_free_block(graph, weights, options);

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <vector>
 
 #include "mesh/edge_graph.h"
 #include "solvers/sparse_ldlt.h"
@@ -32,6 +33,9 @@ struct ArapSolveOptions {
   /// A tet mesh's long chords then weigh no more than the short edges they
   /// span, instead of dominating the stiffness of bending (docs/method.md).
   bool inverse_length_weights = false;
+  /// Optional factors of the edge weights, one per edge of the graph (its order),
+  /// each finite and > 0; empty: none.
+  std::vector<double> edge_factors;
 };
 
 /// The factor arap_solve's global steps solve with: the free rows' block of the
@@ -40,7 +44,7 @@ struct ArapSolveOptions {
 /// beside other work and hand it to arap_solve.
 /// @param graph, P as arap_solve's; options: num_fixed, anchor, inverse_length_weights
 /// @throws UsageError if P's rows are not the graph's vertices or num_fixed is
-///         not in [1, n - 1]
+///         not in [1, n - 1], or edge_factors are not one finite factor > 0 per edge
 /// @throws NumericalError if some free vertex has no path to a held one
 std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                                const ArapSolveOptions& options);
@@ -58,7 +62,8 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
 /// @param factor arap_factorization(graph, P, options) made already, or null
 ///        (then it is made here, when there is a step to take)
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
-///         max_iterations < 0, tolerance < 0, anchor < 0 or anderson < 0
+///         max_iterations < 0, tolerance < 0, anchor < 0 or anderson < 0, or
+///         edge_factors are not one finite factor > 0 per edge
 /// @throws NumericalError if some free vertex has no path to a held one (checked
 ///         only when there is a step to take: max_iterations > 0)
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,

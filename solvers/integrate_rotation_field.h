@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 #include "mesh/edge_graph.h"
 
@@ -23,6 +24,10 @@ struct IntegrateOptions {
   /// edge weights of every step: "uniform" or "inverse_length" (ArapSolveOptions::
   /// inverse_length_weights: long chords of a tet mesh do not stiffen its bending)
   std::string weights = "uniform";
+  /// the surface's edges that no tet has join the steps' edges, their weights times
+  /// this (the pipeline builds that graph: mesh/tet_and_surface_edge_graph.h); 0: the
+  /// tets' edges alone
+  double surface_edges = 0;
 };
 
 /// Where integrate_rotation_field spent its time (wall seconds).
@@ -41,10 +46,13 @@ struct IntegrateTimes {
 ///        of its surface's graph Laplacian, the same for every pose
 /// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0
 /// @param times   optional: the two parts' seconds
+/// @param edge_factors optional: per edge of `graph` (its order), a factor of the
+///        steps' weights (ArapSolveOptions::edge_factors); empty: none
 /// @throws UsageError for mismatched sizes, negative options or unknown weights
 Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                           const Eigen::MatrixX3d& Q, double lambda2,
                                           const IntegrateOptions& options,
-                                          IntegrateTimes* times = nullptr);
+                                          IntegrateTimes* times = nullptr,
+                                          const std::vector<double>& edge_factors = {});
 
 }  // namespace unfold

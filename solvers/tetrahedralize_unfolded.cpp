@@ -41,7 +41,8 @@ void harmonic_fill(const EdgeGraph& graph, int num_fixed, Eigen::MatrixX3d* X) {
 }  // namespace
 
 UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::MatrixX3d& S,
-                                        const TetOptions& options, int placement_iterations) {
+                                        const TetOptions& options, bool surface_edges_join,
+                                        int placement_iterations) {
   const int ns = int(input.V.rows());
   if (S.rows() != ns)
     throw UsageError("tetrahedralize_unfolded: the unfolded surface has " +
@@ -72,7 +73,11 @@ UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::M
   // Flat tets across the surface that turn inside out in the input (19 % of
   // david0's): without them E_rig of cat is 0.68 -> 0.49 and its pose ratio
   // 0.29 -> 0.22 (docs/method.md, contact).
-  out.report.dropped_inverted_tets = drop_inverted_tets(tets.V, X, &tets.T);
+  // When the solve joins the surface's edges, no inverted tet is kept only to
+  // join surface vertices: what it would hold them by has no rest shape.
+  const Eigen::MatrixXi surface_edges = Eigen::MatrixXi(F);
+  out.report.dropped_inverted_tets =
+      drop_inverted_tets(tets.V, X, &tets.T, surface_edges_join ? &surface_edges : nullptr);
   out.report.inverted_rest_tets = count_inverted_tets(tets.V, X, tets.T);
   out.report.num_tets = int(tets.T.rows());
   out.unfolded = std::move(tets.V);

@@ -33,11 +33,15 @@ struct UnfoldedTetMesh {
 /// @param input   the input surface (rest positions of the surface vertices)
 /// @param S       unfolded positions of the input's vertices (rows of input.V)
 /// @param options how S is tetrahedralized (route, quality)
+/// @param surface_edges_join the solve joins the surface's edges to the tets'
+///        (tet_and_surface_edge_graph): inverted tets are then kept only to join
+///        interior vertices, not surface ones
 /// @param placement_iterations ARAP steps placing the interior into the input
 /// @return the rest tet mesh (surface rows = input.V) and its unfolded positions
 /// @throws UsageError if S's size is not input's, NumericalError if S cannot be
 ///         tetrahedralized or the placement fails
 UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::MatrixX3d& S,
-                                        const TetOptions& options, int placement_iterations = 100);
+                                        const TetOptions& options, bool surface_edges_join = false,
+                                        int placement_iterations = 100);
 
 }  // namespace unfold

@@ -240,6 +240,43 @@ TEST(ArapSolve, AFactorMadeApartGivesTheSameSteps) {
   EXPECT_THROW(arap_factorization(graph, g.mesh.V.topRows(10), options), UsageError);
 }
 
+// Edge factors scale each edge's weight: factors of 1 are no factors, bit for
+// bit; weaker edges on one side of the grid let that side follow the bend less
+// stiffly (its ARAP part against the anchor), and the steps minimise the
+// energy with those weights, not without them.
+TEST(ArapSolve, EdgeFactorsWeighTheirEdges) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
+  ArapSolveOptions options = anchored_to_convergence();
+  options.inverse_length_weights = true;
+  const Eigen::MatrixX3d plain = arap_solve(graph, g.mesh.V, bent, options);
+  ArapSolveOptions ones = options;
+  ones.edge_factors.assign(size_t(graph.num_edges()), 1.0);
+  EXPECT_EQ(arap_solve(graph, g.mesh.V, bent, ones), plain);
+  ArapSolveOptions weak = options;
+  weak.edge_factors.assign(size_t(graph.num_edges()), 1.0);
+  for (int e = 0; e < graph.num_edges(); ++e)
+    if (g.mesh.V(graph.edges(e, 0), 0) < 2 && g.mesh.V(graph.edges(e, 1), 0) < 2)
+      weak.edge_factors[size_t(e)] = 0.01;
+  const Eigen::MatrixX3d weakened = arap_solve(graph, g.mesh.V, bent, weak);
+  // Where the edges are weak the anchor wins: the result stays nearer the start there.
+  double near_plain = 0, near_weak = 0;
+  for (int i = 1; i < int(g.mesh.V.rows()); ++i)
+    if (g.mesh.V(i, 0) < 1) {
+      near_plain += (plain.row(i) - bent.row(i)).norm();
+      near_weak += (weakened.row(i) - bent.row(i)).norm();
+    }
+  EXPECT_LT(near_weak, 0.5 * near_plain);
+  ArapSolveOptions wrong = options;
+  wrong.edge_factors.assign(3, 1.0);
+  EXPECT_THROW(arap_solve(graph, g.mesh.V, bent, wrong), UsageError);
+  wrong.edge_factors.assign(size_t(graph.num_edges()), 1.0);
+  wrong.edge_factors[0] = 0;
+  EXPECT_THROW(arap_solve(graph, g.mesh.V, bent, wrong), UsageError);
+  EXPECT_THROW(arap_factorization(graph, g.mesh.V, wrong), UsageError);
+}
+
 TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -48,6 +50,33 @@ TEST(Cli, DemoRunWritesEveryOutput) {
     EXPECT_NE(text.str().find(key), std::string::npos) << key;
   EXPECT_EQ(text.str().find("\"E_geo\": null"), std::string::npos);  // below 20,000: computed
   EXPECT_TRUE(file_exists(tets));
+  // The damage measure (issue 44) beside inverted_tets: present and finite, in
+  // the JSON and in the summary line.
+  const auto number = [&](const std::string& key) {
+    const size_t at = text.str().find("\"" + key + "\": ");
+    return at == std::string::npos ? NAN
+                                   : std::strtod(text.str().c_str() + at + key.size() + 4, nullptr);
+  };
+  for (const char* key :
+       {"inverted_tets", "damaged_edges_percent", "surface_edge_ratio_p999",
+        "surface_edge_ratio_max", "surface_edge_ratio_min", "damaged_surface_edges",
+        "surface_edges_measured", "zero_length_surface_edges"})
+    EXPECT_TRUE(std::isfinite(number(key))) << key;
+  EXPECT_GE(number("damaged_edges_percent"), 0);
+  EXPECT_LE(number("damaged_edges_percent"), 100);
+  EXPECT_GE(number("surface_edge_ratio_max"), number("surface_edge_ratio_p999"));
+  EXPECT_GE(number("surface_edge_ratio_p999"), 1);
+  EXPECT_LE(number("surface_edge_ratio_min"), 1);
+  // A closed surface: V + F - 2 unique edges, all measured.
+  EXPECT_EQ(number("surface_edges_measured"), double(input.V.rows() + input.faces.size()) - 2);
+  EXPECT_NE(r.out.find("; damaged surface edges "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("% (ratio outside [1/3, 3]; ratio p99.9 "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" inverted tets\n"), std::string::npos) << r.out;
+  // The edge damage is a point field of the canonical tet mesh.
+  std::ifstream vtu(tets);
+  std::stringstream vtu_text;
+  vtu_text << vtu.rdbuf();
+  EXPECT_NE(vtu_text.str().find("Name=\"edge_damage\""), std::string::npos);
 }
 
 std::string file_bytes(const std::string& path) {

@@ -61,7 +61,8 @@ TEST(Config, PaperConfigIsThePapersMethod) {
   EXPECT_EQ(paper.cascade.growth, 2.0);
   EXPECT_EQ(paper.energy.stretch_weight, 1.0);
   EXPECT_EQ(paper.energy.arap_weight, 1.0);
-  EXPECT_EQ(paper.soften.scale, 0.0);  // one solve, the joints as stiff as the limbs
+  EXPECT_EQ(paper.soften.scale, 0.0);             // one solve, the joints as stiff as the limbs
+  EXPECT_EQ(paper.integrate.surface_edges, 0.0);  // no integration, the tets' edges alone
   EXPECT_EQ(load_options(UNFOLD_SOURCE_DIR "/configs/surface.yaml").domain, "surface");
 }
 
@@ -98,6 +99,10 @@ TEST(Config, ErrorsNameTheKey) {
   expect_usage_error("soften:\n  scale: -1\n", "'soften.scale' must be >= 0");
   expect_usage_error("soften:\n  floor: 0\n", "'soften.floor' must be in (0, 1]");
   expect_usage_error("soften:\n  floor: 1.5\n", "'soften.floor' must be in (0, 1]");
+  expect_usage_error("integrate:\n  surface_edges: -0.5\n",
+                     "'integrate.surface_edges' must be a finite number >= 0");
+  expect_usage_error("integrate:\n  surface_edges: .nan\n",
+                     "'integrate.surface_edges' must be a finite number >= 0");
   expect_usage_error("cascade: [1, 2\n", "invalid YAML");
   expect_usage_error("- 1\n- 2\n", "not a mapping");
   // The surface domain has no tets: no cotangent weights, no volumes.

@@ -216,11 +216,18 @@ namespace {
 
 TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   test::TempDir dir;
-  write_results_csv(dir.file("results.csv"),
-                    {{"cat0", "cat", "default", 0.5, 0.1, 0.2, 1.0, "ok"},
-                     {"cat1", "cat", "default", 0.7, 0.3, 0.4, 1.0, "ok"},
-                     {"cat0", "cat", "lsmds", 3.0, 0.2, 0.05, 2.0, "ok"},
-                     {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}});
+  std::vector<BatchRow> results = {{"cat0", "cat", "default", 0.5, 0.1, 0.2, 1.0, "ok"},
+                                   {"cat1", "cat", "default", 0.7, 0.3, 0.4, 1.0, "ok"},
+                                   {"cat0", "cat", "lsmds", 3.0, 0.2, 0.05, 2.0, "ok"},
+                                   {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}};
+  // The damage measure (issue 44) of the default's two cats.
+  const double damage[2][4] = {{0.5, 2.5, 8, 10}, {1.5, 48, 810, 30}};
+  for (int k = 0; k < 2; ++k) {
+    BatchRow& r = results[size_t(k)];
+    r.damaged_edges_percent = damage[k][0], r.surface_edge_ratio_p999 = damage[k][1];
+    r.surface_edge_ratio_max = damage[k][2], r.inverted_tets = damage[k][3];
+  }
+  write_results_csv(dir.file("results.csv"), results);
   std::string precision = "", header =
                                   "method,framework,queries,nn,first_tier,second_tier,"
                                   "e_measure,dcg";
@@ -238,6 +245,11 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   const std::string md = evaluation_report_markdown({{dir_path, "2k"}});
   EXPECT_NE(md.find("| cat | 0.6000 (2/2) | 3.0000 (1/2) |"), std::string::npos) << md;
   EXPECT_NE(md.find("cat1, lsmds@2k: no, it failed"), std::string::npos) << md;
+  // Damage: per class the mean and the worst shape; lsmds has no damage figures.
+  EXPECT_NE(md.find("| cat | 1.000 (worst 1.500 cat1) (2/2) | - (0/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 25.25 (worst 48.00 cat1) (2/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 409.00 (worst 810.00 cat1) (2/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 20 (worst 30 cat1) (2/2) |"), std::string::npos) << md;
   EXPECT_NE(md.find("| framework | measure | raw@2k | default@2k |"), std::string::npos) << md;
   EXPECT_NE(md.find("| icp | NN | 0.500 | 1.000 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| icp | DCG | 0.750 | 1.000 |"), std::string::npos) << md;

@@ -86,22 +86,61 @@ TEST(MetricsSelection, OnlyTheAskedMetricsAreComputedAndTheyEqualAFullRun) {
   EXPECT_TRUE(std::isnan(n.metrics.E_rig) && std::isnan(n.metrics.E_str) &&
               std::isnan(n.metrics.E_geo));
   EXPECT_EQ(n.metrics.inverted_tets, all.metrics.inverted_tets);  // always counted
-  EXPECT_EQ(n.cascade.positions, all.cascade.positions);          // the unfolding is the same
+  // So is the damage measure (issue 44), over the surface's unique edges.
+  EXPECT_EQ(n.metrics.damage.ratio_p999, all.metrics.damage.ratio_p999);
+  EXPECT_EQ(n.metrics.damage.per_vertex, all.metrics.damage.per_vertex);
+  EXPECT_EQ(n.metrics.damage.edges, int(sphere.V.rows() + sphere.faces.size()) - 2);
+  EXPECT_EQ(n.cascade.positions, all.cascade.positions);  // the unfolding is the same
 }
 
 TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
   const test::TempDir dir;
   const std::string path = dir.file("results.csv");
   const double nan = std::nan("");
-  write_results_csv(path, {{"cat0", "cat", "default", 0.5, 0.25, nan, 1.5, "ok"}});
+  BatchRow damaged{"cat1", "cat", "default", 0.5, 0.25, 0.125, 2.5, "ok"};
+  damaged.damaged_edges_percent = 1.25, damaged.surface_edge_ratio_p999 = 4.5;
+  damaged.surface_edge_ratio_max = 213, damaged.inverted_tets = 3000;
+  write_results_csv(path, {{"cat0", "cat", "default", 0.5, 0.25, nan, 1.5, "ok"}, damaged});
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,1.5,ok"), std::string::npos) << text.str();
+  EXPECT_EQ(text.str().rfind("shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
+                             "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,"
+                             "seconds,status\n",
+                             0),
+            0u)
+      << text.str();
+  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,,,,,1.5,ok"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("cat1,cat,default,0.5,0.25,0.125,1.25,4.5,213,3000,2.5,ok"),
+            std::string::npos)
+      << text.str();
   const std::vector<BatchRow> rows = read_results_csv(path);
-  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].E_rig, 0.5);
   EXPECT_TRUE(std::isnan(rows[0].E_geo));
+  EXPECT_TRUE(std::isnan(rows[0].damaged_edges_percent));
+  EXPECT_EQ(rows[1].damaged_edges_percent, 1.25);
+  EXPECT_EQ(rows[1].surface_edge_ratio_p999, 4.5);
+  EXPECT_EQ(rows[1].surface_edge_ratio_max, 213);
+  EXPECT_EQ(rows[1].inverted_tets, 3000);
+  EXPECT_EQ(rows[1].seconds, 2.5);
+  EXPECT_EQ(rows[1].status, "ok");
+}
+
+// A results.csv written before the damage columns still reads: those are NaN.
+TEST(MetricsSelection, ResultsCsvWithoutTheDamageColumnsStillReads) {
+  const test::TempDir dir;
+  const std::string path = dir.file("results.csv");
+  test::write_bytes(path,
+                    "shape,class,method,E_rig,E_str,E_geo,seconds,status\n"
+                    "cat0,cat,default,0.5,0.25,,1.5,ok\n");
+  const std::vector<BatchRow> rows = read_results_csv(path);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].E_str, 0.25);
+  EXPECT_EQ(rows[0].seconds, 1.5);
+  EXPECT_EQ(rows[0].status, "ok");
+  EXPECT_TRUE(std::isnan(rows[0].damaged_edges_percent) && std::isnan(rows[0].inverted_tets));
 }
 
 TEST(MetricsSelection, UnfoldFlagWritesNullAndSaysNotComputed) {

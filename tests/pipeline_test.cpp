@@ -51,7 +51,9 @@ TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
 
 // configs/invariant.yaml (a converged surface solve, its rotations integrated):
 // every pair of the demo shape's poses ends at most 0.3 times as far apart as
-// it started, with the input's local detail back (E_rig of the paper's order).
+// it started, with the input's local detail back (E_rig of the paper's order:
+// at most 1.5 times the paper config's on the same pose, over the same edges
+// where the solve joins the surface's to the tets').
 // configs/contact.yaml (the same on the unfolded shape's tets) does so with the
 // poses whose legs touch or pass through each other too; its tets were made on
 // a surface curved otherwise than the input (straight joints), so a few flat
@@ -60,13 +62,16 @@ void expect_nearly_one_canonical_form(const std::string& config,
                                       const std::vector<ShapePose>& shape_poses,
                                       double max_inverted = 0) {
   const Options options = load_options(UNFOLD_SOURCE_DIR "/configs/" + config);
+  Options paper = paper_options();
+  paper.metrics = {"E_rig"};
   const int count = int(shape_poses.size());
   std::vector<SurfaceMesh> poses;
   std::vector<UnfoldResult> forms;
   for (int pose = 0; pose < count; ++pose) {
     poses.push_back(make_articulated_shape(shape_poses[size_t(pose)]));
     forms.push_back(unfold_surface(poses.back(), options));
-    EXPECT_LT(forms.back().metrics.E_rig, 0.7) << config << ", pose " << pose;
+    const double paper_rig = unfold_surface(poses.back(), paper).metrics.E_rig;
+    EXPECT_LT(forms.back().metrics.E_rig, 1.5 * paper_rig) << config << ", pose " << pose;
     EXPECT_LE(forms.back().metrics.inverted_tets, max_inverted * double(forms.back().tets.T.rows()))
         << config << ", pose " << pose;
   }

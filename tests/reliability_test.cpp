@@ -12,6 +12,7 @@
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
+#include "metrics/surface_damage.h"
 #include "pipeline/metrics_json.h"
 #include "pipeline/unfold_surface.h"
 #include "solvers/cascade.h"
@@ -173,6 +174,13 @@ TEST(Components, MergedPerVertexFieldsAndERigAreOverAllTetVertices) {
                           (ra.num_edges + rb.num_edges);
   EXPECT_GT(std::abs(r.metrics.E_rig - by_edges), 1e-6);  // the old weighting would differ
   EXPECT_EQ(r.metrics.inverted_tets, ra.metrics.inverted_tets + rb.metrics.inverted_tets);
+  // The damage measure: over the merged surface, as over any output (issue 44).
+  const SurfaceDamage d = surface_damage(r.surface.V, r.canonical.V, r.surface.faces);
+  EXPECT_EQ(r.metrics.damage.edges, ra.metrics.damage.edges + rb.metrics.damage.edges);
+  EXPECT_EQ(r.metrics.damage.edges, d.edges);
+  EXPECT_EQ(r.metrics.damage.ratio_p999, d.ratio_p999);
+  EXPECT_EQ(r.metrics.damage.per_vertex, d.per_vertex);
+  EXPECT_EQ(r.metrics.damage.per_vertex.size(), r.canonical.V.rows());
 }
 
 TEST(Components, SimplifiedComponentsFollowOneAnother) {

@@ -252,7 +252,7 @@ TEST(Scf, BeforeAfterPictureDrawsBothSkeletons) {
   const UnfoldResult result = unfold_surface(pose, scf_options());
   const RenderOptions render;
   const Image plain = render_before_after(result, render);
-  const Image drawn = render_before_after(result, render, false, true);
+  const Image drawn = render_before_after(result, render, SurfaceColoring::kShading, true);
   ASSERT_EQ(plain.width, drawn.width);
   const Rgb white{255, 255, 255};
   const auto near_shape = [&](int x, int y) {
@@ -274,7 +274,9 @@ TEST(Scf, BeforeAfterPictureDrawsBothSkeletons) {
   }
   Options lsmds = scf_options();
   lsmds.method = "lsmds";
-  EXPECT_THROW(render_before_after(unfold_surface(pose, lsmds), render, false, true), UsageError);
+  EXPECT_THROW(
+      render_before_after(unfold_surface(pose, lsmds), render, SurfaceColoring::kShading, true),
+      UsageError);
 }
 
 // centaur4 at 2k: the surface's repair splits 152 vertices off (holes whose

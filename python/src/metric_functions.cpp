@@ -10,6 +10,7 @@
 #include "metrics/rigidity_error.h"
 #include "metrics/shape_retrieval.h"
 #include "metrics/stretch_error.h"
+#include "metrics/surface_damage.h"
 #include "pipeline/cmbof_matrix.h"
 
 namespace py = pybind11;
@@ -43,6 +44,27 @@ void def_metric_functions(py::module_& m) {
       py::arg("rest"), py::arg("deformed"), py::arg("elements"),
       py::arg("exact_limit") = GeodesicErrorOptions().exact_limit,
       py::arg("landmarks") = GeodesicErrorOptions().sources, release());
+  m.def(
+      "surface_damage",
+      [](const Vertices& rest, const Vertices& deformed, const Elements& F, double bound) {
+        SurfaceDamage d;
+        {
+          py::gil_scoped_release unlocked;
+          d = surface_damage(rest, deformed, Eigen::MatrixXi(F), bound);
+        }
+        py::dict r;  // the metrics JSON's keys (pipeline/metrics_json.cpp)
+        r["damaged_edges_percent"] = d.damaged_edges_percent;
+        r["surface_edge_ratio_p999"] = d.ratio_p999;
+        r["surface_edge_ratio_max"] = d.ratio_max;
+        r["surface_edge_ratio_min"] = d.ratio_min;
+        r["damaged_surface_edges"] = d.damaged_edges;
+        r["surface_edges_measured"] = d.edges;
+        r["zero_length_surface_edges"] = d.zero_length_edges;
+        r["scale"] = d.scale;
+        r["per_vertex"] = Eigen::VectorXd(d.per_vertex);
+        return r;
+      },
+      py::arg("rest"), py::arg("deformed"), py::arg("F"), py::arg("bound") = kDamagedEdgeRatio);
   m.def(
       "surface_area",
       [](const Vertices& V, const Elements& F) { return surface_area(make_surface(V, F)); },

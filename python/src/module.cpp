@@ -11,4 +11,5 @@ PYBIND11_MODULE(_core, m) {
   unfold::python::def_mesh_functions(m);
   unfold::python::def_unfold_functions(m);
   unfold::python::def_metric_functions(m);
+  unfold::python::def_match_functions(m);
 }

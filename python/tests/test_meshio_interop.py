@@ -20,7 +20,7 @@ def test_meshio_reads_the_tet_mesh_and_surface_with_their_fields(tmp_path, demo,
     np.testing.assert_allclose(tets.points, r.tet_vertices, atol=1e-9)
     assert [block.type for block in tets.cells] == ["tetra"]
     np.testing.assert_array_equal(tets.cells[0].data, r.tets)
-    assert set(tets.point_data) == {"rigidity_error", "stretch_ratio"}
+    assert set(tets.point_data) == {"rigidity_error", "stretch_ratio", "edge_damage"}
     for name, values in tets.point_data.items():
         assert len(values) == len(tets.points)
         np.testing.assert_allclose(values, r.tet_vertex_fields[name], rtol=1e-6)

@@ -17,12 +17,23 @@ def rotation(angle):
     return np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
+def solve_edges(r):
+    """The edges the default measures on: the tets' and the surface's (integrate.surface_edges)."""
+    T, F = np.asarray(r.tets), np.asarray(r.faces)
+    pairs = [T[:, [a, b]] for a in range(4) for b in range(a + 1, 4)]
+    pairs += [F[:, [a, (a + 1) % 3]] for a in range(3)]
+    return np.vstack(pairs)
+
+
 def test_metrics_equal_the_runs_metrics(small_result):
     r = small_result
     P, Q = r.rest_tet_vertices, r.tet_vertices
-    assert metrics.e_rig(P, Q, r.tets) == pytest.approx(r.metrics["E_rig"], rel=1e-12)
+    E = solve_edges(r)
+    assert metrics.e_rig(P, Q, E) == pytest.approx(r.metrics["E_rig"], rel=1e-12)
     assert metrics.e_str(P, Q) == pytest.approx(r.metrics["E_str"], rel=1e-12)
-    assert metrics.e_geo(P, Q, r.tets) == pytest.approx(r.metrics["E_geo"], rel=1e-12)
+    assert metrics.e_geo(P, Q, E) == pytest.approx(r.metrics["E_geo"], rel=1e-12)
+    # The tets alone leave some of the surface's edges out: another number.
+    assert metrics.e_rig(P, Q, r.tets) != pytest.approx(r.metrics["E_rig"], rel=1e-6)
 
 
 def test_metrics_of_known_motions(small_result):
@@ -34,6 +45,71 @@ def test_metrics_of_known_motions(small_result):
     assert metrics.e_geo(P, P, T) > 0.01  # straight lines are shorter than edge paths
     assert metrics.e_geo(P, 2 * moved, T) == pytest.approx(metrics.e_geo(P, P, T), rel=1e-9)
     assert metrics.e_str(P, 1.5 * P, exact_limit=0, samples=1000) == pytest.approx(0.5)
+
+
+DAMAGE_KEYS = ("damaged_edges_percent", "surface_edge_ratio_p999", "surface_edge_ratio_max",
+               "surface_edge_ratio_min", "damaged_surface_edges", "surface_edges_measured",
+               "zero_length_surface_edges")
+
+
+def test_surface_damage_equals_the_runs_metrics(small_result):
+    r = small_result
+    n = len(r.vertices)
+    d = metrics.surface_damage(r.rest_tet_vertices[:n], r.vertices, r.faces)
+    for key in DAMAGE_KEYS:
+        assert np.isfinite(r.metrics[key]), key
+        assert d[key] == pytest.approx(r.metrics[key], rel=1e-12), key
+    np.testing.assert_allclose(d["per_vertex"], r.edge_damage, rtol=1e-12, atol=0)
+    assert r.metrics["surface_edges_measured"] > len(r.faces)
+
+
+def unique_edges(F):
+    E = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    return np.unique(E, axis=0)
+
+
+def test_surface_damage_of_known_motions(small_result):
+    r = small_result
+    n = len(r.vertices)
+    P, F = r.rest_tet_vertices[:n], r.faces
+    moved = 2.5 * P @ rotation(0.7).T + [1.0, -2.0, 3.0]
+    d = metrics.surface_damage(P, moved, F)
+    assert d["damaged_edges_percent"] == 0 and d["damaged_surface_edges"] == 0
+    assert d["surface_edge_ratio_max"] == pytest.approx(1, abs=1e-12)
+    assert d["surface_edge_ratio_min"] == pytest.approx(1, abs=1e-12)
+    assert d["scale"] == pytest.approx(1 / 2.5, rel=1e-12)
+    assert d["per_vertex"].shape == (n,) and d["per_vertex"].max() < 1e-12
+    # One vertex pulled 30 mean edge lengths out: exactly its edges are damaged.
+    E = unique_edges(F)
+    mean_edge = np.linalg.norm(P[E[:, 0]] - P[E[:, 1]], axis=1).mean()
+    pulled = P.copy()
+    pulled[17] += 30 * mean_edge * np.array([0.6, 0.0, 0.8])
+    d = metrics.surface_damage(P, pulled, F)
+    incident = int(np.count_nonzero((E == 17).any(axis=1)))
+    assert d["damaged_surface_edges"] == incident
+    assert d["surface_edges_measured"] == len(E)
+    assert d["damaged_edges_percent"] == pytest.approx(100 * incident / len(E))
+    assert d["surface_edge_ratio_max"] > 3
+    assert d["per_vertex"][17] == d["per_vertex"].max()  # its neighbours may tie
+    # A bound just past the largest distortion either way: none damaged.
+    loose = 1.01 * max(d["surface_edge_ratio_max"], 1 / d["surface_edge_ratio_min"])
+    assert metrics.surface_damage(P, pulled, F, bound=loose)["damaged_surface_edges"] == 0
+
+
+def test_surface_damage_refuses_bad_input(small_result):
+    r = small_result
+    n = len(r.vertices)
+    P, F = r.rest_tet_vertices[:n], r.faces
+    with pytest.raises(unfold.InputError):
+        metrics.surface_damage(P, P[:-1], F)
+    bad = F.copy()
+    bad[0, 0] = n
+    with pytest.raises(unfold.InputError):
+        metrics.surface_damage(P, P, bad)
+    with pytest.raises(unfold.ConfigError):
+        metrics.surface_damage(P, P, F, bound=1.0)
+    with pytest.raises(unfold.NumericalError):
+        metrics.surface_damage(P, np.zeros_like(P), F)
 
 
 def test_pose_and_retrieval_distances(small_result, demo):

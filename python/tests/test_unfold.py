@@ -37,6 +37,7 @@ def test_result_arrays_fit_together(demo, demo_result):
     np.testing.assert_array_equal(r.rest_tet_vertices[:n], V)  # surface vertices come first
     np.testing.assert_array_equal(r.tet_vertices[:n], r.vertices)
     assert r.rigidity_error.shape == (n,) and r.stretch_ratio.shape == (n,)
+    assert r.edge_damage.shape == (n,) and np.all(r.tet_vertex_fields["edge_damage"][n:] == 0)
     assert set(r.tet_fields) == {"volume_ratio", "rigidity"}
     assert all(len(v) == len(r.tets) for v in r.tet_fields.values())
     assert r.metrics["E_rig"] == pytest.approx(r.tet_vertex_fields["rigidity_error"].mean())

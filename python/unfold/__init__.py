@@ -29,7 +29,7 @@ from ._core import ConfigError, Error, InputError, NumericalError, OutputError
 
 __all__ = ["Error", "ConfigError", "InputError", "NumericalError", "OutputError", "Result",
            "read_mesh", "write_mesh", "read_vts", "demo_shape", "unfold", "compare", "config_keys",
-           "metrics"]
+           "metrics", "correspond"]
 
 logging.getLogger("unfold").addHandler(logging.NullHandler())
 
@@ -50,7 +50,7 @@ class Result:
     tets: (T, 4) int32 tetrahedra.
     rest_tet_vertices: (N, 3) rest positions of every tet vertex.
     tet_vertex_fields, tet_fields: per tet vertex (rigidity_error,
-        stretch_ratio) and per tet (volume_ratio, rigidity), as written to
+        stretch_ratio, edge_damage) and per tet (volume_ratio, rigidity), as written to
         --tet_output x.vtu.
     skeleton_nodes, skeleton_edges, canonical_skeleton_nodes: method="scf"
         only (else empty): the input's curve skeleton, (k, 3) nodes and (b, 2)
@@ -79,6 +79,13 @@ class Result:
     def stretch_ratio(self) -> np.ndarray:
         """(n,) mean canonical/rest length ratio of each surface vertex's edges."""
         return self.tet_vertex_fields["stretch_ratio"][: len(self.vertices)]
+
+    @property
+    def edge_damage(self) -> np.ndarray:
+        """(n,) the largest |ln r| of each surface vertex's surface edges, r the
+        edge's canonical/rest length ratio at the rest area (the damage measure:
+        metrics["damaged_edges_percent"] etc.; past ln 3 = 1.0986 an edge is damaged)."""
+        return self.tet_vertex_fields["edge_damage"][: len(self.vertices)]
 
 
 def read_mesh(path: PathLike) -> tuple[np.ndarray, np.ndarray]:
@@ -175,6 +182,25 @@ def compare(V: npt.ArrayLike, F: npt.ArrayLike,
             name = os.path.splitext(os.path.basename(path))[0] if path else f"config{k + 1}"
         runs.append((name, path, {**flat, **fixed}))
     return _core.compare(V, F, runs)
+
+
+def correspond(source_V: npt.ArrayLike, source_F: npt.ArrayLike, target_V: npt.ArrayLike,
+               target_F: npt.ArrayLike, config: _config.Config = None,
+               **overrides: Any) -> np.ndarray:
+    """A dense point-to-point map from one surface to another, as unfold_match.
+
+    Each surface is unfolded into its canonical form; the forms are aligned
+    rigidly, the map or its mirror image chosen, and the map refined by ZoomOut
+    (config keys match.*, e.g. match={"refine": "none"}). config and overrides
+    as for unfold().
+
+    Returns an (n_source,) int64 array: the 0-based target vertex of each
+    source vertex. Raises ConfigError, InputError or NumericalError.
+    """
+    VA, FA = _arrays.surface(source_V, source_F)
+    VB, FB = _arrays.surface(target_V, target_F)
+    path, flat = _config.split(config, overrides)
+    return np.asarray(_core.correspond(VA, FA, VB, FB, path, flat)["map"], dtype=np.int64)
 
 
 def config_keys() -> list[tuple[str, str, str]]:

@@ -1,7 +1,8 @@
 """The quality metrics of the paper and of the evaluation, on numpy arrays.
 
 The same functions that fill Result.metrics and the batch reports:
-E_rig (Eq. 8), E_str (Eq. 9), E_geo (Eq. 10), pose distance (two canonical
+E_rig (Eq. 8), E_str (Eq. 9), E_geo (Eq. 10), the surface damage measure
+(edge length ratios at the input's area: their tail), pose distance (two canonical
 forms of one shape), retrieval distances (two shapes' canonical forms: ICP and
 ORT; CMBOF over a set of shapes) and the retrieval measures of a dissimilarity matrix (NN, FT, ST, E, DCG,
 precision-recall), as retrieval.csv reports them.
@@ -58,6 +59,35 @@ def e_geo(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike,
     return _core.e_geo(P, _arrays.vertices(deformed, "deformed"),
                        _arrays.elements(elements, len(P), None, "elements"),
                        **_set(exact_limit=exact_limit, landmarks=landmarks))
+
+
+def surface_damage(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLike,
+                   bound: float | None = None) -> dict[str, Any]:
+    """Damage of a deformed surface (e.g. a canonical form) against its rest shape.
+
+    rest, deformed: (n, 3) positions of one surface; F: (m, k) faces, k >= 3
+    (polygons: their sides are the edges). Over the unique edges of nonzero
+    rest length, r = s |deformed edge| / |rest edge| with s =
+    sqrt(area(rest) / area(deformed)), so r = 1 for every edge of a rotated,
+    scaled and moved copy. Returns a dict with the metrics JSON's keys:
+    damaged_edges_percent (edges with r outside [1/bound, bound], bound 3 by
+    default, in percent), surface_edge_ratio_p999 (nearest rank: the k-th
+    smallest r, k = ceil(0.999 m)), surface_edge_ratio_max (most stretched),
+    surface_edge_ratio_min (most crushed), damaged_surface_edges,
+    surface_edges_measured, zero_length_surface_edges (skipped); and scale (s)
+    and per_vertex ((n,) the largest |ln r| of each vertex's edges). A run's
+    metrics hold the same figures for its surface and canonical form.
+    Raises InputError for bad arrays, ConfigError for bound <= 1,
+    NumericalError for a non-finite or zero-area deformed surface.
+    """
+    P = _arrays.vertices(rest, "rest")
+    Q = _arrays.vertices(deformed, "deformed")
+    if len(Q) != len(P):
+        raise InputError(f"deformed has {len(Q)} vertices, rest {len(P)}")
+    result = _core.surface_damage(P, Q, _arrays.elements(F, len(P), None, "F"),
+                                  **_set(bound=bound))
+    result["per_vertex"] = np.asarray(result["per_vertex"])
+    return result
 
 
 def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
