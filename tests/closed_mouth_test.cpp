@@ -19,6 +19,7 @@
 #include "metrics/surface_damage.h"
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
+#include "test_meshes.h"
 
 namespace unfold {
 namespace {
@@ -41,14 +42,6 @@ double mean_edge_length(const SurfaceMesh& m) {
       ++count;
     }
   return sum / count;
-}
-
-double signed_volume(const SurfaceMesh& m) {
-  const Eigen::MatrixX3i F = triangulate_faces(m);
-  double v = 0;
-  for (Eigen::Index t = 0; t < F.rows(); ++t)
-    v += m.V.row(F(t, 0)).dot(m.V.row(F(t, 1)).cross(m.V.row(F(t, 2)))) / 6;
-  return v;
 }
 
 // Edges between i and every vertex, breadth first: hops along the surface.
@@ -130,7 +123,7 @@ TEST(ClosedMouth, SurfacesAreValidClosedMeshes) {
     const EdgeGraph graph = build_edge_graph(int(m.V.rows()), triangulate_faces(m));
     EXPECT_EQ(m.V.rows() - graph.num_edges() + int(m.faces.size()), 2)
         << resolution << ": a sphere's Euler characteristic";
-    EXPECT_GT(signed_volume(m), 0.5) << resolution << ": outward orientation";
+    EXPECT_GT(test::signed_volume(m), 0.5) << resolution << ": outward orientation";
   }
 }
 

@@ -17,14 +17,6 @@
 namespace unfold {
 namespace {
 
-// Signed volume enclosed (divergence theorem): its sign is the orientation.
-double signed_volume(const SurfaceMesh& mesh) {
-  double volume = 0;
-  for (const auto& f : mesh.faces)
-    volume += mesh.V.row(f[0]).dot(mesh.V.row(f[1]).cross(mesh.V.row(f[2]))) / 6;
-  return volume;
-}
-
 int euler_characteristic(const SurfaceMesh& mesh) {
   std::set<std::pair<int, int>> edges;
   for (const auto& f : mesh.faces)
@@ -39,8 +31,9 @@ void expect_same_closed_surface(const SurfaceMesh& in, const SurfaceMesh& out) {
   EXPECT_EQ(report.num_nonmanifold_edges, 0);
   EXPECT_EQ(report.num_misoriented_edges, 0);
   EXPECT_NEAR(surface_area(out), surface_area(in), 1e-12 * surface_area(in));
-  EXPECT_NEAR(signed_volume(out), signed_volume(in), 1e-12 * std::abs(signed_volume(in)));
-  EXPECT_GT(signed_volume(out), 0);
+  EXPECT_NEAR(test::signed_volume(out), test::signed_volume(in),
+              1e-12 * std::abs(test::signed_volume(in)));
+  EXPECT_GT(test::signed_volume(out), 0);
   EXPECT_EQ(euler_characteristic(out), euler_characteristic(in));
   ASSERT_GE(out.V.rows(), in.V.rows());
   EXPECT_EQ(out.V.topRows(in.V.rows()), in.V);

@@ -20,6 +20,7 @@
 #include "core/errors.h"
 #include "mesh/edge_graph.h"
 #include "shapes/articulated_shape.h"
+#include "test_meshes.h"
 
 namespace unfold {
 namespace {
@@ -40,14 +41,6 @@ class ShapeTest : public ::testing::Test {
   static std::vector<SurfaceMesh>* shapes_;
 };
 std::vector<SurfaceMesh>* ShapeTest::shapes_ = nullptr;
-
-double signed_volume(const SurfaceMesh& m) {
-  const Eigen::MatrixX3i F = triangulate_faces(m);
-  double v = 0;
-  for (Eigen::Index t = 0; t < F.rows(); ++t)
-    v += m.V.row(F(t, 0)).dot(m.V.row(F(t, 1)).cross(m.V.row(F(t, 2)))) / 6;
-  return v;
-}
 
 double min_angle_degrees(const SurfaceMesh& m) {
   const Eigen::MatrixX3i F = triangulate_faces(m);
@@ -84,7 +77,7 @@ TEST_F(ShapeTest, RestMeshIsClosedOrientedManifoldSphere) {
     ASSERT_EQ(faces_at[size_t(i)], graph.degree(i)) << "vertex " << i << " is not a single fan";
   EXPECT_EQ(connected_components(graph), 1);
   EXPECT_EQ(m.V.rows() - graph.num_edges() + F.rows(), 2) << "Euler characteristic";
-  EXPECT_GT(signed_volume(m), 0.5) << "outward orientation";
+  EXPECT_GT(test::signed_volume(m), 0.5) << "outward orientation";
   EXPECT_GE(m.V.rows(), 3000);
   EXPECT_LE(m.V.rows(), 5000);
   EXPECT_GT(min_angle_degrees(m), 10.0);
@@ -95,7 +88,8 @@ TEST_F(ShapeTest, PosesShareConnectivityAndKeepVolume) {
   for (const SurfaceMesh& m : *shapes_) {
     EXPECT_EQ(m.faces, rest.faces);
     ASSERT_EQ(m.V.rows(), rest.V.rows());
-    EXPECT_NEAR(signed_volume(m), signed_volume(rest), 0.03 * signed_volume(rest));
+    EXPECT_NEAR(test::signed_volume(m), test::signed_volume(rest),
+                0.03 * test::signed_volume(rest));
     EXPECT_GT(min_angle_degrees(m), 5.0);
   }
 }

@@ -13,6 +13,16 @@
 
 namespace unfold::test {
 
+/// Signed volume enclosed by a closed surface (divergence theorem, polygons
+/// fanned): positive when its faces are oriented outwards.
+inline double signed_volume(const SurfaceMesh& m) {
+  const Eigen::MatrixX3i F = triangulate_faces(m);
+  double v = 0;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    v += m.V.row(F(t, 0)).dot(m.V.row(F(t, 1)).cross(m.V.row(F(t, 2)))) / 6;
+  return v;
+}
+
 /// Regular tetrahedron, faces oriented outwards.
 inline SurfaceMesh tetrahedron() {
   SurfaceMesh m;
