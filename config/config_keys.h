@@ -160,6 +160,9 @@
   X(match_mirror_margin, "match.mirror_margin", match.mirror_margin,                               \
     "unfold_match: the mirror image wins below (1 - margin) times the rotation's ICP residual; "   \
     "within the margin the decision is reported as ambiguous")                                     \
+  X(match_synchronize, "match.synchronize", match.synchronize,                                     \
+    "unfold_match --pairs: a pair's best rotation that disagrees with the ones its cycles "        \
+    "through the other shapes imply is replaced by theirs")                                        \
   X(match_refine, "match.refine", match.refine,                                                    \
     "unfold_match: zoomout (ZoomOut on the input surfaces' Laplace-Beltrami bases) or none")       \
   X(match_spectral_size, "match.spectral_size", match.spectral_size,                               \

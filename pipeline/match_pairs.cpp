@@ -19,6 +19,7 @@
 #include "pipeline/match_surfaces.h"
 #include "render/plot_cdf.h"
 #include "render/write_png.h"
+#include "solvers/synchronize_rotations.h"
 
 namespace unfold {
 
@@ -89,6 +90,70 @@ class ShapeCache {
   int count_ = 0;
   double seconds_ = 0;
 };
+
+// A measured rotation farther than this (degrees) from the one the
+// collection implies is replaced by it...
+constexpr double kReseatDegrees = 45;
+// ... when both its shapes are anchored: each in at least this many pairs
+// whose measurement agrees with the collection within kAgreeDegrees (in a
+// lone triangle a wrong pair cannot be told from the other two).
+constexpr int kAnchoringPairs = 3;
+constexpr double kAgreeDegrees = 15;
+
+// match.synchronize: every pair's best-fitting rotation (align_canonical_forms)
+// synchronized over the collection (solvers/synchronize_rotations.h); per
+// pair (source, target) the rotation seed where the pair's own disagrees with
+// the one its cycles through the other shapes imply (a body placed turned
+// round: docs/results/correspondence.md), else none.
+std::map<std::pair<std::string, std::string>, Eigen::Matrix3d> collection_rotation_seeds(
+    ShapeCache& cache, const std::vector<std::pair<std::string, std::string>>& pairs,
+    const MatchOptions& options, bool progress) {
+  std::map<std::string, int> member;
+  std::vector<const MatchShape*> shapes;
+  std::vector<RelativeRotation> measured;
+  std::map<std::pair<int, int>, int> measurement;  // (from, to) -> index
+  for (const auto& [source, target] : pairs) {
+    const CachedShape& a = cache.get(source);
+    const CachedShape& b = cache.get(target);
+    if (!a.shape || !b.shape || source == target) continue;
+    for (const auto* s : {&a, &b}) {
+      const std::string& name = s == &a ? source : target;
+      if (member.emplace(name, int(shapes.size())).second) shapes.push_back(s->shape.get());
+    }
+    const int from = member[source], to = member[target];
+    if (measurement.count({from, to}) || measurement.count({to, from})) continue;
+    const FormAlignments aligned =
+        align_canonical_forms(shapes[from]->canonical, shapes[from]->F, shapes[to]->canonical,
+                              shapes[to]->F, options.alignment);
+    measurement[{from, to}] = int(measured.size());
+    measured.push_back({from, to, aligned.candidates.front().linear});  // the best rotation
+  }
+  std::map<std::pair<std::string, std::string>, Eigen::Matrix3d> seeds;
+  if (measured.size() < 3) return seeds;
+  const SynchronizedRotations sync = synchronize_rotations(int(shapes.size()), measured);
+  std::vector<int> agreeing(shapes.size(), 0);
+  for (size_t e = 0; e < measured.size(); ++e)
+    if (sync.disagreement_degrees[e] < kAgreeDegrees) {
+      ++agreeing[measured[e].from];
+      ++agreeing[measured[e].to];
+    }
+  std::vector<std::string> names(shapes.size());
+  for (const auto& [name, index] : member) names[index] = name;
+  for (size_t e = 0; e < measured.size(); ++e) {
+    const RelativeRotation& m = measured[e];
+    if (sync.disagreement_degrees[e] < kReseatDegrees || agreeing[m.from] < kAnchoringPairs ||
+        agreeing[m.to] < kAnchoringPairs)
+      continue;
+    seeds[{names[m.from], names[m.to]}] = sync.implied[e];
+    seeds[{names[m.to], names[m.from]}] = sync.implied[e].transpose();
+    if (progress)
+      std::fprintf(stderr,
+                   "unfold_match: %s, %s: the pair's best rotation is %.0f degrees from the one "
+                   "the other pairs imply; placed from theirs\n",
+                   names[m.from].c_str(), names[m.to].c_str(), sync.disagreement_degrees[e]);
+  }
+  return seeds;
+}
 
 std::string sym_vts_path(const std::string& mesh_path) {
   return std::filesystem::path(mesh_path).replace_extension(".sym.vts").string();
@@ -185,6 +250,12 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
     check_writable_destination(batch_options.canonical_dir + "/.unfold_match_check");
   ShapeCache cache(batch_options, options);
   MatchBatch batch;
+  const auto sync_start = std::chrono::steady_clock::now();
+  const auto seeds =
+      options.match.synchronize
+          ? collection_rotation_seeds(cache, pairs, options.match, batch_options.progress)
+          : std::map<std::pair<std::string, std::string>, Eigen::Matrix3d>{};
+  batch.seconds_synchronize = seconds_since(sync_start) - cache.seconds();
   int done = 0;
   for (const auto& [source, target] : pairs) {
     PairOutcome p;
@@ -197,7 +268,9 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
       const CachedShape& b = cache.get(target);
       if (!b.shape) throw InputError(b.error);
       const auto start = std::chrono::steady_clock::now();
-      p.match = match_shapes(*a.shape, *b.shape, options.match);
+      const auto seed = seeds.find({source, target});
+      p.match = match_shapes(*a.shape, *b.shape, options.match,
+                             seed == seeds.end() ? nullptr : &seed->second);
       p.seconds = seconds_since(start);
       batch.seconds_pairs += p.seconds;
       write_map(p.map_path, p.match.map);
@@ -231,21 +304,24 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
 }
 
 std::string format_match_summary(const MatchBatch& batch) {
-  int ok = 0, scored = 0, mirrored = 0, ambiguous = 0;
+  int ok = 0, scored = 0, mirrored = 0, ambiguous = 0, placed = 0;
   for (const PairOutcome& p : batch.pairs) {
     ok += p.error.empty();
     scored += !p.strict.empty();
     mirrored += p.error.empty() && p.match.mirrored;
     ambiguous += p.error.empty() && p.match.ambiguous;
+    placed += p.error.empty() && p.match.from_collection;
   }
   std::ostringstream out;
   char line[256];
-  std::snprintf(line, sizeof line,
-                "%d of %zu pairs matched (%d mirrored, %d ambiguous); %d shapes prepared in "
-                "%.1f s, matching %.2f s per pair; per pair with its shapes' share %.2f s\n",
-                ok, batch.pairs.size(), mirrored, ambiguous, batch.shapes, batch.seconds_shapes,
-                ok ? batch.seconds_pairs / ok : 0.0,
-                ok ? (batch.seconds_shapes + batch.seconds_pairs) / ok : 0.0);
+  std::snprintf(
+      line, sizeof line,
+      "%d of %zu pairs matched (%d mirrored, %d ambiguous, %d placed by the "
+      "collection); %d shapes prepared in %.1f s, rotations compared in %.1f s, "
+      "matching %.2f s per pair; per pair with its shares %.2f s\n",
+      ok, batch.pairs.size(), mirrored, ambiguous, placed, batch.shapes, batch.seconds_shapes,
+      batch.seconds_synchronize, ok ? batch.seconds_pairs / ok : 0.0,
+      ok ? (batch.seconds_shapes + batch.seconds_synchronize + batch.seconds_pairs) / ok : 0.0);
   out << line;
   if (scored == 0) return out.str();
   std::snprintf(line, sizeof line, "%d pairs scored; mean geodesic error x100 (over sqrt(area)):\n",

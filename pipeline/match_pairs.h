@@ -54,6 +54,7 @@ struct MatchBatch {
   int shapes = 0;                  ///< shapes prepared (unfolded or read back)
   double seconds_shapes = 0;       ///< unfolding (or reading) and spectral bases, all shapes
   double seconds_pairs = 0;        ///< matching, all pairs
+  double seconds_synchronize = 0;  ///< match.synchronize: the pairs' rotations compared
 };
 
 /// Matches every pair, writing OUT/<source>__<target>.map atomically. A pair

@@ -91,7 +91,8 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
                                      const Eigen::MatrixX3i& source_F,
                                      const Eigen::MatrixX3d& target_V,
                                      const Eigen::MatrixX3i& target_F,
-                                     const FormAlignmentOptions& options) {
+                                     const FormAlignmentOptions& options,
+                                     const Eigen::Matrix3d* rotation_seed) {
   if (options.coarse_points < 4 || options.coarse_iterations < 1 || options.iterations < 1 ||
       options.keep < 1 || !(options.keep_ratio >= 1))
     throw UsageError(
@@ -145,6 +146,18 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
   const Eigen::MatrixX3d S_mirrored = S * X;
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.residual < b.residual; });
+  // A placement refined on every vertex from a coarse one (or the seed).
+  const auto refine = [&](const Candidate& c, bool seeded) {
+    const IcpResult r = icp(c.mirrored ? S_mirrored : S, T, tree, c.R, c.t, options.iterations);
+    FormAlignment out;
+    out.linear = c.mirrored ? Eigen::Matrix3d(r.R * X) : r.R;
+    out.translation = r.t;
+    out.residual = r.residual;
+    out.mirrored = c.mirrored;
+    out.seeded = seeded;
+    out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
+    result.candidates.push_back(std::move(out));
+  };
   for (const bool mirrored : {false, true}) {
     std::vector<const Candidate*> kept;
     for (const Candidate& c : candidates) {
@@ -155,18 +168,9 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
         distinct = distinct && ((k->R - c.R).norm() > 0.2 || (k->t - c.t).norm() > 0.05);
       if (distinct) kept.push_back(&c);
     }
-    const Eigen::MatrixX3d& source = mirrored ? S_mirrored : S;
-    for (const Candidate* c : kept) {
-      const IcpResult r = icp(source, T, tree, c->R, c->t, options.iterations);
-      FormAlignment out;
-      out.linear = mirrored ? Eigen::Matrix3d(r.R * X) : r.R;
-      out.translation = r.t;
-      out.residual = r.residual;
-      out.mirrored = mirrored;
-      out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
-      result.candidates.push_back(std::move(out));
-    }
+    for (const Candidate* c : kept) refine(*c, false);
   }
+  if (rotation_seed) refine({*rotation_seed, Eigen::Vector3d::Zero(), 0, false}, true);
   return result;
 }
 

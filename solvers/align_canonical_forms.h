@@ -30,11 +30,13 @@ struct FormAlignment {
   double residual = 0;
   Eigen::MatrixX3d moved;  ///< the source's vertices so placed (n_source x 3)
   bool mirrored = false;   ///< det(linear) = -1
+  bool seeded = false;     ///< refined from the given rotation seed, not from a principal frame
 };
 
 struct FormAlignments {
   /// distinct placements, each a local optimum of ICP: rotations first, then
-  /// mirrored ones, each group by increasing residual (at least one of each)
+  /// mirrored ones, each group by increasing residual (at least one of each);
+  /// then, with a rotation seed, the placement refined from it
   std::vector<FormAlignment> candidates;
   Eigen::MatrixX3d source;  ///< the source form centred, at unit area
   Eigen::MatrixX3d target;  ///< the target form centred, at unit area (what `moved` fits)
@@ -54,12 +56,16 @@ Eigen::MatrixX3d unit_area_form(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
 /// both ways (so neither form's extra parts are ignored).
 /// @param source_V, source_F the source's canonical form (n x 3, triangles)
 /// @param target_V, target_F the target's canonical form
+/// @param rotation_seed if given, a rotation of the unit-area forms from
+///        elsewhere (a collection's synchronized rotations): one more
+///        candidate, ICP on every vertex from it, `seeded`
 /// @throws UsageError for options out of range (coarse_points < 4, iterations < 1);
 ///         InputError if a form has no area
 FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
                                      const Eigen::MatrixX3i& source_F,
                                      const Eigen::MatrixX3d& target_V,
                                      const Eigen::MatrixX3i& target_F,
-                                     const FormAlignmentOptions& options = {});
+                                     const FormAlignmentOptions& options = {},
+                                     const Eigen::Matrix3d* rotation_seed = nullptr);
 
 }  // namespace unfold

@@ -50,24 +50,29 @@ MatchShape prepare_match_shape(const Eigen::MatrixX3d& V, const Eigen::MatrixX3d
 }
 
 ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
-                        const MatchOptions& options) {
+                        const MatchOptions& options, const Eigen::Matrix3d* rotation_seed) {
   validate_match_options(options);
   ShapeMatch result;
   auto start = std::chrono::steady_clock::now();
   const FormAlignments a = align_canonical_forms(source.canonical, source.F, target.canonical,
-                                                 target.F, options.alignment);
+                                                 target.F, options.alignment, rotation_seed);
   const PointTree tree(a.target);
   const FormAlignment* best_fit = nullptr;
-  const FormAlignment* chosen[2] = {nullptr, nullptr};  // rotation, mirrored: the best fits
-  Eigen::VectorXi chosen_map[2];
+  // rotation, mirrored: the best fits; the seeded rotation instead when there is one
+  const FormAlignment* chosen[2] = {nullptr, nullptr};
   for (const FormAlignment& c : a.candidates) {
     const int side = c.mirrored;
-    if (chosen[side] && chosen[side]->residual <= c.residual) continue;
-    chosen[side] = &c;
-    chosen_map[side] = tree.nearest_rows(c.moved);
-    if (!best_fit || c.residual < best_fit->residual) best_fit = &c;
+    const bool better =
+        !chosen[side] || (c.seeded ? !chosen[side]->seeded
+                                   : !chosen[side]->seeded && c.residual < chosen[side]->residual);
+    if (better) chosen[side] = &c;
+    if (!c.seeded && (!best_fit || c.residual < best_fit->residual)) best_fit = &c;
   }
-  result.rigid = chosen_map[best_fit->mirrored];
+  result.from_collection = chosen[0]->seeded;
+  Eigen::VectorXi chosen_map[2] = {tree.nearest_rows(chosen[0]->moved),
+                                   tree.nearest_rows(chosen[1]->moved)};
+  result.rigid = best_fit == chosen[best_fit->mirrored] ? chosen_map[best_fit->mirrored]
+                                                        : tree.nearest_rows(best_fit->moved);
   result.candidates = int(a.candidates.size());
   result.rotation_residual = chosen[0]->residual;
   result.mirrored_residual = chosen[1]->residual;
@@ -85,11 +90,11 @@ ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
     result.mirrored = ratio < 1 - options.mirror_margin;
     result.ambiguous = !result.mirrored && ratio < 1 / (1 - options.mirror_margin);
     std::snprintf(text, sizeof text,
-                  result.mirrored    ? "mirrored (the mirror image fits %.2fx the rotation)"
+                  result.mirrored    ? "mirrored (the mirror image fits %.2fx the rotation%s)"
                   : result.ambiguous ? "ambiguous: kept the rotation (the mirror image fits %.2fx "
-                                       "the rotation, within the margin)"
-                                     : "rotation (the mirror image fits %.2fx the rotation)",
-                  ratio);
+                                       "the rotation%s, within the margin)"
+                                     : "rotation (the mirror image fits %.2fx the rotation%s)",
+                  ratio, result.from_collection ? " placed by the collection" : "");
     result.oriented = chosen_map[result.mirrored];
   }
   result.decision = text;

@@ -22,6 +22,9 @@ struct MatchOptions {
   /// (1 - margin) times the rotation's; within the margin either way the
   /// decision is reported as ambiguous
   double mirror_margin = 0.4;
+  /// unfold_match's batch: each pair's rotation checked against the ones
+  /// its cycles through the other shapes imply (pipeline/match_pairs.h)
+  bool synchronize = true;
   std::string refine = "zoomout";  ///< zoomout or none
   int spectral_size = 80;          ///< ZoomOut's final basis size (refine zoomout)
   FormAlignmentOptions alignment;
@@ -58,6 +61,9 @@ struct ShapeMatch {
   double mirrored_residual = 0;  ///< FormAlignments::improper.residual
   bool mirrored = false;         ///< the map chosen reverses orientation (a mirror image)
   bool ambiguous = false;        ///< the two placements fit within mirror_margin: no clear cue
+  /// the rotation's placement came from the rotation seed (a collection's
+  /// synchronized rotations), not from the pair's own best fit
+  bool from_collection = false;
   /// one line: "rotation (mirror fits 1.42x worse)", "mirrored (fits 0.61x ...)", "ambiguous ..."
   std::string decision;
   double seconds_align = 0;   ///< alignment and the mirror decision
@@ -70,7 +76,11 @@ struct ShapeMatch {
 /// forms' asymmetry decides; a rigid motion cannot mirror, so the rotation
 /// unless the mirror image fits clearly better); then ZoomOut on the input
 /// surfaces' Laplace-Beltrami bases, from the chosen placement's nearest points.
+/// @param rotation_seed if given, the rotation placement is the one refined
+///        from this rotation of the unit-area forms (align_canonical_forms),
+///        whatever the pair's own best-fitting rotation
 ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
-                        const MatchOptions& options);
+                        const MatchOptions& options,
+                        const Eigen::Matrix3d* rotation_seed = nullptr);
 
 }  // namespace unfold

@@ -159,6 +159,33 @@ TEST(UnfoldMatch, MirroredCopyIsDetectedAsMirrored) {
   EXPECT_LT(mean_map_error(blob, straight.map, identity), 0.02) << straight.decision;
 }
 
+TEST(UnfoldMatch, RotationSeedDecidesThePlacement) {
+  // What unfold_match --pairs does with a pair the collection corrects: the
+  // rotation placement refined from the seed, whatever fits best on its own.
+  const SurfaceMesh blob = chiral_blob(24, 48);
+  const Options options;
+  const MatchShape source = unfold_for_matching(blob, options);
+  SurfaceMesh canonical = blob;
+  canonical.V = source.canonical;
+  const MatchShape copy = match_shape_from_canonical(moved(blob, 4), moved(canonical, 4), options);
+  const int n = int(blob.V.rows());
+  const Eigen::VectorXi identity = Eigen::VectorXi::LinSpaced(n, 0, n - 1);
+  const Eigen::Matrix3d truth = test::random_rotation(4);
+  const ShapeMatch seeded = match_shapes(source, copy, options.match, &truth);
+  EXPECT_TRUE(seeded.from_collection);
+  EXPECT_NE(seeded.decision.find("placed by the collection"), std::string::npos);
+  EXPECT_LT(mean_map_error(blob, seeded.map, identity), 0.02) << seeded.decision;
+  // A seed turned round the long axis: the map follows it, far from the truth.
+  const Eigen::Matrix3d turned =
+      truth * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  MatchOptions rigid = options.match;
+  rigid.refine = "none";
+  const ShapeMatch wrong = match_shapes(source, copy, rigid, &turned);
+  EXPECT_TRUE(wrong.from_collection);
+  EXPECT_GT(mean_map_error(blob, wrong.map, identity), 0.1) << wrong.decision;
+  EXPECT_FALSE(match_shapes(source, copy, rigid).from_collection);
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);
