@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/seconds_since.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/write_surface_mesh.h"
@@ -65,10 +66,6 @@ double enclosed_volume(const SurfaceMesh& s) {
     for (size_t k = 1; k + 1 < f.size(); ++k)
       six_volume += s.V.row(f[0]).dot(s.V.row(f[k]).cross(s.V.row(f[k + 1])));
   return std::abs(six_volume) / 6;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double peak_rss_mb(int who) {

@@ -5,14 +5,11 @@
 #include <ostream>
 
 #include "core/atomic_file.h"
+#include "core/ends_with.h"
 #include "core/errors.h"
 
 namespace unfold {
 namespace {
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
 
 void write_points(std::ostream& out, const Eigen::MatrixX3d& nodes) {
   out << std::setprecision(std::numeric_limits<double>::max_digits10);

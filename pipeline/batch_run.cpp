@@ -24,6 +24,7 @@
 #include "core/errors.h"
 #include "core/output_transaction.h"
 #include "core/progress.h"
+#include "core/seconds_since.h"
 #include "core/terminal_progress.h"
 #include "mesh/mesh_format.h"
 #include "mesh/read_surface_mesh.h"
@@ -42,10 +43,6 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string stem(const std::string& path) { return fs::path(path).stem().string(); }
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // One CSV field: quoted when it holds a comma, quote or line break.
 std::string csv_field(std::string s) {

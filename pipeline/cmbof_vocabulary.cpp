@@ -16,7 +16,7 @@ namespace unfold {
 namespace {
 
 // v2: learned from features of the silhouette-area orientation (descriptor v3).
-constexpr const char* kMagic = "unfold cmbof vocabulary v2";
+constexpr const char* kVocabularyMagic = "unfold cmbof vocabulary v2";
 
 // A 64-bit FNV-1a hash of the byte ranges, in hex.
 std::string fnv1a_hex(std::initializer_list<std::pair<const void*, size_t>> ranges) {
@@ -80,7 +80,7 @@ std::string features_fingerprint(const CmbofFeatures& features) {
 void write_vocabulary(const std::string& path, const Eigen::MatrixXf& vocabulary,
                       const std::string& key) {
   write_file_atomically(path, [&](std::ostream& s) {
-    s << kMagic << '\n'
+    s << kVocabularyMagic << '\n'
       << key << '\n'
       << vocabulary.rows() << ' ' << vocabulary.cols() << '\n'
       << std::setprecision(std::numeric_limits<float>::max_digits10);
@@ -95,7 +95,7 @@ std::optional<Eigen::MatrixXf> read_vocabulary(const std::string& path, const st
   std::ifstream in(path);
   std::string magic, stored_key;
   Eigen::Index rows = -1, cols = -1;
-  if (!std::getline(in, magic) || magic != kMagic || !std::getline(in, stored_key) ||
+  if (!std::getline(in, magic) || magic != kVocabularyMagic || !std::getline(in, stored_key) ||
       stored_key != key || !(in >> rows >> cols) || rows < 1 || cols != 128 || rows > 1000000)
     return std::nullopt;
   Eigen::MatrixXf vocabulary(rows, cols);

@@ -3,6 +3,7 @@
 #include <glog/logging.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
@@ -13,17 +14,6 @@
 #include "pipeline/unfold_surface.h"
 
 namespace unfold {
-namespace {
-
-std::string stem(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const size_t dot = name.find_last_of('.');
-  return dot == std::string::npos ? name : name.substr(0, dot);
-}
-
-}  // namespace
-
 std::map<std::string, std::string> fixed_beta_overrides(double relative_beta) {
   std::ostringstream beta;
   beta << std::setprecision(17) << relative_beta;
@@ -59,7 +49,7 @@ std::vector<ComparisonRow> compare_configs(const SurfaceMesh& surface,
       fixed_beta ? fixed_beta_overrides(*fixed_beta) : std::map<std::string, std::string>{};
   std::vector<NamedOptions> options;
   for (const auto& path : config_paths)
-    options.push_back({stem(path), load_options(path, overrides)});
+    options.push_back({std::filesystem::path(path).stem().string(), load_options(path, overrides)});
   return compare_options(surface, options);
 }
 

@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/seconds_since.h"
 #include "mesh/read_surface_mesh.h"
 #include "mesh/read_vts.h"
 #include "mesh/text_lines.h"
@@ -26,10 +27,6 @@ namespace unfold {
 const char* const kMatchStepNames[kMatchSteps] = {"rigid", "mirror decision", "ZoomOut"};
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 struct CachedShape {
   std::string path;

@@ -16,7 +16,7 @@ namespace {
 
 // v3: the ORT normalisation chooses its orientation by silhouette area, so
 // the ORT samples and CMBOF features of earlier descriptors are stale.
-constexpr const char* kMagic = "unfold retrieval descriptor v3";
+constexpr const char* kDescriptorMagic = "unfold retrieval descriptor v3";
 
 void write_points(std::ostream& s, const Eigen::MatrixX3d& P) {
   s << P.rows() << '\n';
@@ -115,7 +115,7 @@ void write_retrieval_descriptor(const std::string& path, const RetrievalDescript
   write_file_atomically(
       path,
       [&](std::ostream& s) {
-        s << kMagic << '\n'
+        s << kDescriptorMagic << '\n'
           << retrieval_options_key(options) << '\n'
           << std::setprecision(std::numeric_limits<double>::max_digits10);
         write_points(s, descriptor.icp);
@@ -129,7 +129,7 @@ std::optional<RetrievalDescriptor> read_retrieval_descriptor(const std::string& 
                                                              const RetrievalOptions& options) {
   std::ifstream in(path, std::ios::binary);
   std::string magic, key;
-  if (!std::getline(in, magic) || magic != kMagic || !std::getline(in, key) ||
+  if (!std::getline(in, magic) || magic != kDescriptorMagic || !std::getline(in, key) ||
       key != retrieval_options_key(options))
     return std::nullopt;
   RetrievalDescriptor d;

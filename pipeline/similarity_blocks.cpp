@@ -16,7 +16,7 @@ namespace {
 
 // v2: the ORT normalisation chooses its orientation by silhouette area, so
 // the ORT and CMBOF rows of earlier blocks are stale.
-constexpr const char* kMagic = "unfold similarity block v2";
+constexpr const char* kBlockMagic = "unfold similarity block v2";
 
 std::string shape_header(const std::vector<std::string>& names) {
   std::string line = "shape";
@@ -56,7 +56,7 @@ void write_similarity_block(const std::string& path, const Eigen::MatrixXd& bloc
                             const std::vector<std::string>& names, int index, int count,
                             const std::string& key) {
   write_file_atomically(path, [&](std::ostream& s) {
-    s << kMagic << '\n'
+    s << kBlockMagic << '\n'
       << key << '\n'
       << shape_header(names) << '\n'
       << std::setprecision(std::numeric_limits<double>::max_digits10);
@@ -75,7 +75,7 @@ int read_similarity_block(const std::string& path, const std::vector<std::string
                           const std::string& key, Eigen::MatrixXd* matrix) {
   std::ifstream in(path);
   std::string magic, stored_key, header;
-  if (!std::getline(in, magic) || magic != kMagic || !std::getline(in, stored_key) ||
+  if (!std::getline(in, magic) || magic != kBlockMagic || !std::getline(in, stored_key) ||
       stored_key != key || !std::getline(in, header) || header != shape_header(names))
     return 0;
   std::map<std::string, Eigen::Index> index;

@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/fork_safety.h"
 #include "core/parallel.h"
+#include "core/seconds_since.h"
 #include "energies/soft_joint_factors.h"
 #include "mesh/check_surface_mesh.h"
 #include "mesh/edge_graph.h"
@@ -40,10 +41,6 @@
 
 namespace unfold {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The solver divides by rest edge lengths and needs one connected graph.
 void check_tet_graph(const EdgeGraph& graph, const Eigen::MatrixX3d& V) {

@@ -8,7 +8,7 @@
 
 namespace unfold {
 namespace {
-const Rgb kInk{40, 40, 40}, kGrid{225, 225, 225};
+const Rgb kGrid{225, 225, 225};
 }  // namespace
 
 std::vector<double> plot_ticks(double lo, double hi, int count) {
@@ -42,17 +42,17 @@ PlotAxes draw_plot_axes(int x0, int y0, int x1, int y1, double xmin, double xmax
     draw_line(x0, a.py(t), x1, a.py(t), kGrid, 1, image);
     const std::string label = tick_label(t);
     const auto [w, h] = text_size(label, 1);
-    draw_text(label, x0 - w - 6, int(a.py(t)) - h / 2, kInk, 1, image);
+    draw_text(label, x0 - w - 6, int(a.py(t)) - h / 2, kPlotInk, 1, image);
   }
   for (double t : plot_ticks(xmin, xmax, 8)) {
     if (integer_x && t != std::round(t)) continue;
-    draw_line(a.px(t), y1, a.px(t), y1 + 4, kInk, 1, image);
+    draw_line(a.px(t), y1, a.px(t), y1 + 4, kPlotInk, 1, image);
     const std::string label = tick_label(t);
-    draw_text(label, int(a.px(t)) - text_size(label, 1).first / 2, y1 + 7, kInk, 1, image);
+    draw_text(label, int(a.px(t)) - text_size(label, 1).first / 2, y1 + 7, kPlotInk, 1, image);
   }
-  draw_line(x0, y0, x0, y1, kInk, 1, image);
-  draw_line(x0, y1, x1, y1, kInk, 1, image);
-  draw_text(title, x0, y0 - 16, kInk, 1, image);
+  draw_line(x0, y0, x0, y1, kPlotInk, 1, image);
+  draw_line(x0, y1, x1, y1, kPlotInk, 1, image);
+  draw_text(title, x0, y0 - 16, kPlotInk, 1, image);
   return a;
 }
 
@@ -66,7 +66,7 @@ void draw_legend(const std::vector<std::string>& names, int right, int top, Imag
   for (size_t s = 0; s < names.size(); ++s) {
     const int y = top + 8 + 14 * int(s);
     fill_rect(right - 150, y + 2, right - 136, y + 6, series_color(s), image);
-    draw_text(names[s], right - 130, y, kInk, 1, image);
+    draw_text(names[s], right - 130, y, kPlotInk, 1, image);
   }
 }
 

@@ -9,6 +9,9 @@
 
 namespace unfold {
 
+/// The plots' text and frame colour.
+inline constexpr Rgb kPlotInk{40, 40, 40};
+
 /// A plot area in pixels and the data range it shows.
 struct PlotAxes {
   int x0, y0, x1, y1;

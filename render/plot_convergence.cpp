@@ -13,7 +13,7 @@
 namespace unfold {
 namespace {
 
-const Rgb kInk{40, 40, 40}, kCascade{150, 150, 150};
+const Rgb kCascade{150, 150, 150};
 
 using Axes = PlotAxes;
 
@@ -47,8 +47,8 @@ Image plot_convergence(const std::vector<IterationRecord>& history,
     throw UsageError("plot_convergence: the plot needs at least 200 x 200 pixels");
   Image image(width, height);
   if (history.empty()) {  // e.g. Ceres starting at its minimum: a picture saying so
-    draw_text("convergence: no iterations (the start already met the stopping rule)", 78, 8, kInk,
-              1, &image);
+    draw_text("convergence: no iterations (the start already met the stopping rule)", 78, 8,
+              kPlotInk, 1, &image);
     return image;
   }
   const double xmin = std::min(0, history.front().iteration - 1);
@@ -57,7 +57,7 @@ Image plot_convergence(const std::vector<IterationRecord>& history,
   const int top = 44, bottom = height - 42, middle = (top + bottom) / 2;
   draw_text("convergence: " + std::to_string(history.size()) + " iterations, " +
                 std::to_string(history.back().cascade) + " cascades (dashed: beta grows)",
-            left, 8, kInk, 1, &image);
+            left, 8, kPlotInk, 1, &image);
 
   double emin = history.front().energy, emax = emin;
   for (const auto& r : history) {
@@ -83,7 +83,8 @@ Image plot_convergence(const std::vector<IterationRecord>& history,
   draw_series(
       ratio, history, [](const IterationRecord& r) { return r.edge_ratio; }, {214, 39, 40}, &image);
   const std::string xlabel = "iteration";
-  draw_text(xlabel, (left + right - text_size(xlabel, 1).first) / 2, height - 16, kInk, 1, &image);
+  draw_text(xlabel, (left + right - text_size(xlabel, 1).first) / 2, height - 16, kPlotInk, 1,
+            &image);
   return image;
 }
 

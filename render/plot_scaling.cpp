@@ -10,7 +10,6 @@
 namespace unfold {
 namespace {
 
-const Rgb kInk{40, 40, 40};
 const Rgb kColors[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {255, 127, 14}};
 
 void check(const std::vector<double>& n, const std::vector<double>& values,
@@ -68,7 +67,7 @@ Image plot_scaling(const std::vector<double>& n, const std::vector<ScalingSeries
     draw_series(time, k, seconds[s].second, color, &image);
     const int y = top + 8 + 14 * int(s);
     fill_rect(time.x0 + 10, y + 2, time.x0 + 24, y + 6, color, &image);
-    draw_text(seconds[s].first, time.x0 + 30, y, kInk, 1, &image);
+    draw_text(seconds[s].first, time.x0 + 30, y, kPlotInk, 1, &image);
   }
   const PlotAxes memory =
       draw_plot_axes(middle + 40, top, width - 20, bottom, 0, xmax, 0,
@@ -77,7 +76,7 @@ Image plot_scaling(const std::vector<double>& n, const std::vector<ScalingSeries
   draw_series(memory, k, peak_mb, {148, 103, 189}, &image);
   const std::string xlabel = "tet vertices n (thousands)";
   for (const PlotAxes* a : {&time, &memory})
-    draw_text(xlabel, (a->x0 + a->x1 - text_size(xlabel, 1).first) / 2, height - 18, kInk, 1,
+    draw_text(xlabel, (a->x0 + a->x1 - text_size(xlabel, 1).first) / 2, height - 18, kPlotInk, 1,
               &image);
   return image;
 }

@@ -6,17 +6,10 @@
 #include <cstdio>
 
 #include "core/errors.h"
+#include "core/seconds_since.h"
 #include "geometry/point_tree.h"
 
 namespace unfold {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
-
 void validate_match_options(const MatchOptions& o) {
   if (o.mirror != "auto" && o.mirror != "off")
     throw UsageError("config key 'match.mirror' must be auto or off, got '" + o.mirror + "'");

@@ -14,7 +14,9 @@
 #include "test_files.h"
 
 namespace unfold {
-namespace {
+// Named, not anonymous: the unity build compiles this file with
+// cli_matrix_test.cpp, whose Factor and kLevels differ.
+namespace compare_matrix {
 
 enum Factor { kInput, kConfigs, kFixedBeta, kCsv };
 const std::vector<int> kLevels = {test::kNumInputs, 3, 2, 2};
@@ -57,5 +59,5 @@ TEST(CompareMatrix, EveryCombinationSucceedsCompletelyOrFailsCleanly) {
               failures);
 }
 
-}  // namespace
+}  // namespace compare_matrix
 }  // namespace unfold
