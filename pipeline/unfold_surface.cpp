@@ -307,15 +307,23 @@ double surface_lambda2(const SurfaceMesh& surface) {
 // of S, its interior put back into the input (solvers/tetrahedralize_unfolded.h):
 // parts that touch in the input are joined by no tet. The result's tets become
 // that mesh, and the cascade's positions S's own tet mesh. With `integrates`,
-// returns surface_lambda2 computed meanwhile (on one thread: the tets' Delaunay
-// runs in TetGen's process and leaves a core idle); else no future.
+// returns surface_lambda2 computed meanwhile, on one thread; else no future.
+// It depends on the surface alone: below kMinParallelRows vertices the surface
+// solve runs on one thread and it goes beside that (wolf0: out of the way of
+// the carve's two threads); above, beside the tets' Delaunay, which runs in
+// TetGen's process and leaves a core idle.
 std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldResult* solved,
                                            bool integrates, UnfoldResult* out) {
   UnfoldResult& result = *out;
-  surface_cascade(options, solved, out);
   std::future<double> lambda2;
-  if (integrates && kForkAlongsideThreads)
-    lambda2 = std::async(std::launch::async, [&result] { return surface_lambda2(result.surface); });
+  const auto start_lambda2 = [&] {
+    if (integrates && kForkAlongsideThreads && !lambda2.valid())
+      lambda2 =
+          std::async(std::launch::async, [&result] { return surface_lambda2(result.surface); });
+  };
+  if (result.surface.V.rows() < kMinParallelRows) start_lambda2();
+  surface_cascade(options, solved, out);
+  start_lambda2();
   const auto start = std::chrono::steady_clock::now();
   // Route auto is robust for the unfolded shape: it may or may not intersect
   // itself somewhere, and one route for every pose keeps the poses' tets alike.

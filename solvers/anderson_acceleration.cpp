@@ -4,7 +4,9 @@
 
 namespace unfold {
 
-Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& x, const Eigen::VectorXd& g) {
+void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                const Eigen::Ref<const Eigen::VectorXd>& g,
+                                Eigen::Ref<Eigen::VectorXd> out) {
   f_ = g - x;
   const Eigen::Index n = f_.size();
   if (has_last_ && last_f_.size() == n) {
@@ -24,10 +26,15 @@ Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& x, const Eigen
   has_last_ = true;
   last_f_ = f_;
   last_g_ = g;
-  if (count_ == 0) return g;
+  if (count_ == 0) {
+    out = g;
+    return;
+  }
   qr_.compute(dF_.leftCols(count_));
   const Eigen::VectorXd gamma = qr_.solve(f_);
-  return g - dG_.leftCols(count_) * gamma;
+  // What Eigen makes of out = g - dG gamma: g, then the product subtracted in place.
+  out = g;
+  out.noalias() -= dG_.leftCols(count_) * gamma;
 }
 
 void AndersonAcceleration::reset() {

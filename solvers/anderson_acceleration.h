@@ -16,13 +16,16 @@ class AndersonAcceleration {
   /// @param window how many past steps are combined (m >= 1)
   explicit AndersonAcceleration(int window) : window_(window) {}
 
-  /// The accelerated successor of x, given g = G(x): g itself on the first
-  /// call after construction or reset(), then g - dG gamma with gamma the
-  /// least-squares fit of the residual f = g - x by the last residual
+  /// Writes into out the accelerated successor of x, given g = G(x): g itself
+  /// on the first call after construction or reset(), then g - dG gamma with
+  /// gamma the least-squares fit of the residual f = g - x by the last residual
   /// differences dF (rank-revealing QR, so repeated steps do no harm). The
   /// differences and the QR keep their storage from step to step (fresh ones
-  /// were 13 MB of new pages a step at 166k unknowns: docs/history/performance.md).
-  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& g);
+  /// were 13 MB of new pages a step at 166k unknowns: docs/history/performance.md),
+  /// and x, g and out are views, so that the callers' n x 3 positions need no copies.
+  /// @param out the same size as x; may be x or g itself
+  void next(const Eigen::Ref<const Eigen::VectorXd>& x, const Eigen::Ref<const Eigen::VectorXd>& g,
+            Eigen::Ref<Eigen::VectorXd> out);
 
   /// Forgets the past steps (e.g. after an extrapolation was rejected).
   void reset();

@@ -201,19 +201,23 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   const bool accelerate = options.anderson > 0;
   AndersonAcceleration anderson(std::max(1, options.anderson));
   double level = fit(Q);
-  Eigen::MatrixX3d free;
+  // The steps' right side, solution, start and extrapolation: storage reused.
+  Eigen::MatrixX3d rhs, free, x, extrapolated;
   int it = 0;
   while (it < options.max_iterations) {
     ++it;
     report_step(it, options.max_iterations);
     // d/dq_i of the energy = 0 for the free rows, R held.
-    ldlt.solve(fixed_rhs + B, &free);
+    rhs = fixed_rhs + B;
+    ldlt.solve(rhs, &free);
     const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();
-    const Eigen::MatrixX3d x = Q.bottomRows(m);
+    x = Q.bottomRows(m);
     bool plain = !accelerate;
     double energy = 0;
     if (accelerate) {
-      Q.bottomRows(m) = anderson.next(x.reshaped(), free.reshaped()).reshaped(m, 3);
+      extrapolated.resize(m, 3);
+      anderson.next(x.reshaped(), free.reshaped(), extrapolated.reshaped());
+      Q.bottomRows(m) = extrapolated;
       energy = fit(Q);
       if (!(energy < level)) {
         anderson.reset();

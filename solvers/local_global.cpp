@@ -149,9 +149,12 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     return total_energy(problem, *Q, R_, data_.beta);
   };
   if (accelerate) level = fit_and_measure();
+  // The iterate before the global step and the plain step after it, their
+  // storage reused from iteration to iteration.
+  Eigen::MatrixX3d x, plain;
   for (int i = 1;; ++i) {
     if (!accelerate) fit_rotations(problem, *Q, data_.beta, &R_, &covariances_);
-    const Eigen::MatrixX3d x = accelerate ? *Q : Eigen::MatrixX3d();
+    if (accelerate) x = *Q;
     global_step(data_, R_, Q);
     const int iteration = int(history->size()) + 1;
     if (!Q->allFinite()) {
@@ -164,8 +167,8 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     if (accelerate) {
       // Accept the extrapolation only if it lowers the energy; the plain
       // step always does (docs/method.md), so the iterates stay monotone.
-      const Eigen::MatrixX3d plain = *Q;
-      *Q = anderson.next(x.reshaped(), plain.reshaped()).reshaped(Q->rows(), 3);
+      plain = *Q;
+      anderson.next(x.reshaped(), plain.reshaped(), Q->reshaped());
       energy = fit_and_measure();
       if (!(energy <= level)) {
         anderson.reset();

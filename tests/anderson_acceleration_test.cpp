@@ -30,13 +30,15 @@ TEST(AndersonAcceleration, SolvesASlowLinearIterationInAFewSteps) {
   AndersonAcceleration anderson(n);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n), plain = x;
   for (int k = 0; k < n + 2; ++k) {
-    x = anderson.next(x, G(x));
+    anderson.next(x, G(x), x);
     plain = G(plain);
   }
   EXPECT_LT((x - fixed).norm(), 1e-9 * fixed.norm());
   EXPECT_GT((plain - fixed).norm(), 0.5 * fixed.norm());
   anderson.reset();  // after a reset the first step is the plain one
-  EXPECT_EQ(anderson.next(plain, G(plain)), G(plain));
+  Eigen::VectorXd first(n);
+  anderson.next(plain, G(plain), first);
+  EXPECT_EQ(first, G(plain));
 }
 
 // The window slides: once it is full each step drops the oldest difference.
@@ -73,7 +75,8 @@ TEST(AndersonAcceleration, EachStepIsTheFitOfTheLastWindowOfDifferences) {
         F.col(c) = dF[size_t(c)], D.col(c) = dG[size_t(c)];
       expected = g - D * F.colPivHouseholderQr().solve(f);
     }
-    const Eigen::VectorXd next = anderson.next(x, g);
+    Eigen::VectorXd next(n);
+    anderson.next(x, g, next);
     ASSERT_EQ(next, expected) << "step " << k;
     x = next;
   }
