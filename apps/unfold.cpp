@@ -46,7 +46,8 @@ DEFINE_string(tet_output, "", "canonical tet mesh: .vtu (ParaView) or .node (Tet
 DEFINE_string(rest_tet_output, "",
               "the tet mesh the run unfolded, at rest (.vtu or .node): to keep, inspect, or give "
               "back with --tet_input (by default the unfolded shape's tets put into the input; "
-              "given back, they unfold as with --tet_shape input)");
+              "a .vtu also keeps where they were made, point array 'unfolded', and given back "
+              "unfolds as the run did; a .node as with --tet_shape input)");
 DEFINE_string(skeleton_output, "",
               "method scf: the input's curve skeleton as line segments (.vtk or .ply)");
 DEFINE_string(canonical_skeleton_output, "",
@@ -139,11 +140,11 @@ int run() {
     surface = unfold::read_surface_mesh(FLAGS_input);
   }
   const unfold::UnfoldResult result =
-      FLAGS_tet_input.empty()
-          ? unfold::unfold_surface(surface, options)
-          : unfold::unfold_prepared(
-                unfold::prepare_mesh_from_tets(surface, given_tets.V, given_tets.T, options),
-                options);
+      FLAGS_tet_input.empty() ? unfold::unfold_surface(surface, options)
+                              : unfold::unfold_prepared(unfold::prepare_mesh_from_tets(
+                                                            surface, given_tets.V, given_tets.T,
+                                                            options, given_tets.unfolded),
+                                                        options);
 
   const bool wants_skeleton =
       !FLAGS_skeleton_output.empty() || !FLAGS_canonical_skeleton_output.empty();
@@ -158,7 +159,8 @@ int run() {
     unfold::write_tet_mesh(FLAGS_tet_output, result.tet_canonical, result.tets.T,
                            unfold::canonical_tet_fields(result));
   if (!FLAGS_rest_tet_output.empty())
-    unfold::write_tet_mesh(FLAGS_rest_tet_output, result.tets.V, result.tets.T);
+    unfold::write_tet_mesh(FLAGS_rest_tet_output, result.tets.V, result.tets.T,
+                           unfold::rest_tet_fields(result));
   if (!FLAGS_skeleton_output.empty())
     unfold::write_polyline(FLAGS_skeleton_output, result.skeleton.nodes, result.skeleton.edges);
   if (!FLAGS_canonical_skeleton_output.empty())

@@ -154,7 +154,24 @@ TetMeshData read_vtu(const std::string& path) {
                              std::to_string(types[c]) + ")");
   if (connectivity.size() != 4 * types.size())
     fail_reading(path, "the connectivity does not match the cells");
-  return assemble(xyz, connectivity, 0, path);
+  TetMeshData mesh = assemble(xyz, connectivity, 0, path);
+  // <PointData ...> carries attributes: element() wants a bare tag.
+  const size_t point_data = text.find("<PointData");
+  const std::string_view point_arrays =
+      point_data == std::string::npos
+          ? std::string_view()
+          : std::string_view(text).substr(point_data,
+                                          text.find("</PointData>", point_data) - point_data);
+  if (point_arrays.find("Name=\"unfolded\"") != std::string_view::npos) {
+    const std::vector<double> unfolded =
+        numbers(data_array(point_arrays, "Name=\"unfolded\"", path), 0.0);
+    if (unfolded.size() != xyz.size())
+      fail_reading(path, "the point array 'unfolded' has " + std::to_string(unfolded.size()) +
+                             " values for " + std::to_string(xyz.size() / 3) + " points x 3");
+    mesh.unfolded = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+        unfolded.data(), mesh.V.rows(), 3);
+  }
+  return mesh;
 }
 
 // --- TetGen .node/.ele: "n 3 attributes markers" then "index x y z ...", and

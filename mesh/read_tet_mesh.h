@@ -12,6 +12,9 @@ namespace unfold {
 struct TetMeshData {
   Eigen::MatrixX3d V;
   Eigen::MatrixX4i T;  ///< 0-based rows of V
+  /// a .vtu's point array "unfolded" (3 components), as --rest_tet_output
+  /// writes it for the unfolded shape's tets: where they were made; else empty
+  Eigen::MatrixX3d unfolded;
 };
 
 /// Throws InputError unless path ends in .vtu, .node, .msh or .mesh.
@@ -22,7 +25,7 @@ void check_tet_input_format(const std::string& path);
 /// cells of a .vtu refused.
 /// @throws InputError naming the file for an unsupported format (binary .vtu
 ///         or .msh included), a malformed or truncated file, an index out of
-///         range, or no tetrahedra
+///         range, or no tetrahedra, or an "unfolded" array of the wrong size
 TetMeshData read_tet_mesh(const std::string& path);
 
 }  // namespace unfold

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/errors.h"
+
 namespace unfold {
 namespace {
 
@@ -21,30 +23,36 @@ uint64_t spread_bits(uint64_t x) {
 
 }  // namespace
 
-void sort_interior_vertices(TetMesh* tets) {
+void sort_interior_vertices(TetMesh* tets, Eigen::MatrixX3d* made) {
   const int n = int(tets->V.rows()), first = tets->num_surface_vertices;
+  if (made && made->rows() != n)
+    throw UsageError("sort_interior_vertices: " + std::to_string(made->rows()) +
+                     " made positions for " + std::to_string(n) + " vertices");
   if (n - first < 2) return;
-  const Eigen::RowVector3d low = tets->V.colwise().minCoeff();
-  const double extent = (tets->V.colwise().maxCoeff() - low).maxCoeff();
+  const Eigen::MatrixX3d& P = made ? *made : tets->V;
+  const Eigen::RowVector3d low = P.colwise().minCoeff();
+  const double extent = (P.colwise().maxCoeff() - low).maxCoeff();
   if (!(extent > 0)) return;
   const double scale = double((1 << 21) - 1) / extent;
   std::vector<std::pair<uint64_t, int>> keys;
   keys.reserve(size_t(n - first));
   for (int i = first; i < n; ++i) {
     uint64_t key = 0;
-    for (int k = 0; k < 3; ++k) key |= spread_bits(uint64_t((tets->V(i, k) - low[k]) * scale)) << k;
+    for (int k = 0; k < 3; ++k) key |= spread_bits(uint64_t((P(i, k) - low[k]) * scale)) << k;
     keys.emplace_back(key, i);
   }
   std::sort(keys.begin(), keys.end());
   std::vector<int> new_index(static_cast<size_t>(n));
   for (int i = 0; i < first; ++i) new_index[size_t(i)] = i;
-  Eigen::MatrixX3d V(n, 3);
-  V.topRows(first) = tets->V.topRows(first);
-  for (size_t k = 0; k < keys.size(); ++k) {
-    new_index[size_t(keys[k].second)] = first + int(k);
-    V.row(first + int(k)) = tets->V.row(keys[k].second);
-  }
-  tets->V = std::move(V);
+  const auto renumbered = [&](const Eigen::MatrixX3d& X) {
+    Eigen::MatrixX3d Y(n, 3);
+    Y.topRows(first) = X.topRows(first);
+    for (size_t k = 0; k < keys.size(); ++k) Y.row(first + int(k)) = X.row(keys[k].second);
+    return Y;
+  };
+  for (size_t k = 0; k < keys.size(); ++k) new_index[size_t(keys[k].second)] = first + int(k);
+  tets->V = renumbered(tets->V);
+  if (made) *made = renumbered(*made);
   for (Eigen::Index t = 0; t < tets->T.rows(); ++t)
     for (int c = 0; c < 4; ++c) tets->T(t, c) = new_index[size_t(tets->T(t, c))];
 }

@@ -12,6 +12,10 @@ namespace unfold {
 /// Renumbers the interior vertices (rows num_surface_vertices and up) in
 /// Morton (Z-curve) order of their positions, ties by old index; the surface
 /// vertices keep their rows. T is renumbered to match: the same mesh.
-void sort_interior_vertices(TetMesh* tets);
+/// @param made optional other positions of the same vertices (where the tets
+///        were made, e.g. the unfolded shape's): the order is theirs, and their
+///        rows are renumbered too, so that a mesh sorted by them keeps its order
+/// @throws UsageError if made's row count differs from the mesh's
+void sort_interior_vertices(TetMesh* tets, Eigen::MatrixX3d* made = nullptr);
 
 }  // namespace unfold

@@ -11,12 +11,23 @@ namespace unfold {
 namespace {
 
 void write_fields(std::ostream& out, const char* tag,
-                  const std::vector<std::pair<std::string, Eigen::VectorXd>>& fields) {
-  if (fields.empty()) return;
-  out << '<' << tag << " Scalars=\"" << fields.front().first << "\">\n";
+                  const std::vector<std::pair<std::string, Eigen::VectorXd>>& fields,
+                  const std::vector<std::pair<std::string, Eigen::MatrixX3d>>& vectors = {}) {
+  if (fields.empty() && vectors.empty()) return;
+  out << '<' << tag;
+  if (!fields.empty()) out << " Scalars=\"" << fields.front().first << '"';
+  if (!vectors.empty()) out << " Vectors=\"" << vectors.front().first << '"';
+  out << ">\n";
   for (const auto& [name, values] : fields) {
     out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
     for (Eigen::Index i = 0; i < values.size(); ++i) out << values[i] << '\n';
+    out << "</DataArray>\n";
+  }
+  for (const auto& [name, X] : vectors) {
+    out << "<DataArray type=\"Float64\" Name=\"" << name
+        << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (Eigen::Index i = 0; i < X.rows(); ++i)
+      out << X(i, 0) << ' ' << X(i, 1) << ' ' << X(i, 2) << '\n';
     out << "</DataArray>\n";
   }
   out << "</" << tag << ">\n";
@@ -29,7 +40,7 @@ void write_vtu(std::ostream& out, const Eigen::MatrixX3d& V, const Eigen::Matrix
       << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << V.rows() << "\" NumberOfCells=\""
       << T.rows() << "\">\n";
-  write_fields(out, "PointData", fields.per_vertex);
+  write_fields(out, "PointData", fields.per_vertex, fields.per_vertex_vectors);
   write_fields(out, "CellData", fields.per_tet);
   out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
       << "format=\"ascii\">\n";
@@ -66,6 +77,11 @@ void write_tet_mesh(const std::string& path, const Eigen::MatrixX3d& V, const Ei
       throw UsageError("write_tet_mesh: tet field '" + name + "' has " +
                        std::to_string(values.size()) + " values for " + std::to_string(T.rows()) +
                        " tets");
+  for (const auto& [name, X] : fields.per_vertex_vectors)
+    if (X.rows() != V.rows())
+      throw UsageError("write_tet_mesh: vertex vector field '" + name + "' has " +
+                       std::to_string(X.rows()) + " rows for " + std::to_string(V.rows()) +
+                       " vertices");
   if (ends_with(path, ".vtu")) {
     write_file_atomically(path, [&](std::ostream& out) { write_vtu(out, V, T, fields); });
     return;

@@ -29,4 +29,11 @@ TetMeshFields canonical_tet_fields(const UnfoldResult& result) {
   return fields;
 }
 
+TetMeshFields rest_tet_fields(const UnfoldResult& result) {
+  TetMeshFields fields;
+  if (result.unfolded_tet_positions.rows() > 0)
+    fields.per_vertex_vectors = {{"unfolded", result.unfolded_tet_positions}};
+  return fields;
+}
+
 }  // namespace unfold

@@ -16,4 +16,10 @@ namespace unfold {
 /// @throws InputError if a rest tet or edge is degenerate
 TetMeshFields canonical_tet_fields(const UnfoldResult& result);
 
+/// Fields of the rest tet mesh (--rest_tet_output): per vertex "unfolded",
+/// where the tets were made when that is not the rest (the unfolded shape's
+/// tets, result.unfolded_tet_positions), so that given back (--tet_input,
+/// read_tet_mesh) they unfold as they did; none otherwise.
+TetMeshFields rest_tet_fields(const UnfoldResult& result);
+
 }  // namespace unfold

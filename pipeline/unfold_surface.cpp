@@ -306,14 +306,16 @@ double surface_lambda2(const SurfaceMesh& surface) {
 // tetrahedralize.shape: unfolded. The surface solve S first, then the tet mesh
 // of S, its interior put back into the input (solvers/tetrahedralize_unfolded.h):
 // parts that touch in the input are joined by no tet. The result's tets become
-// that mesh, and the cascade's positions S's own tet mesh. With `integrates`,
+// that mesh, and the cascade's positions S's own tet mesh; with `given_unfolded`
+// (given tets and where they were made) those instead. With `integrates`,
 // returns surface_lambda2 computed meanwhile, on one thread; else no future.
 // It depends on the surface alone: below kMinParallelRows vertices the surface
 // solve runs on one thread and it goes beside that (wolf0: out of the way of
 // the carve's two threads); above, beside the tets' Delaunay, which runs in
 // TetGen's process and leaves a core idle.
 std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldResult* solved,
-                                           bool integrates, UnfoldResult* out) {
+                                           bool integrates, UnfoldResult* out,
+                                           const Eigen::MatrixX3d* given_unfolded = nullptr) {
   UnfoldResult& result = *out;
   std::future<double> lambda2;
   const auto start_lambda2 = [&] {
@@ -324,6 +326,15 @@ std::future<double> solve_on_unfolded_tets(const Options& options, const UnfoldR
   if (result.surface.V.rows() < kMinParallelRows) start_lambda2();
   surface_cascade(options, solved, out);
   start_lambda2();
+  if (given_unfolded) {
+    // Given tets made on an unfolded shape (an earlier run's): its surface is
+    // this solve's, the interior where the tets were made.
+    Eigen::MatrixX3d unfolded = *given_unfolded;
+    unfolded.topRows(result.surface.V.rows()) = result.cascade.positions;
+    result.cascade.positions = unfolded.rowwise() - unfolded.colwise().mean();
+    result.unfolded_tet_positions = std::move(unfolded);
+    return lambda2;
+  }
   const auto start = std::chrono::steady_clock::now();
   // Route auto is robust for the unfolded shape: it may or may not intersect
   // itself somewhere, and one route for every pose keeps the poses' tets alike.
@@ -531,8 +542,12 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
   // if it was deferred.
   // Given tets (prepare_mesh_from_tets) are the user's: never replaced.
   const bool given = prepared.tet_report.route == "given";
-  bool on_unfolded = !given && tets_from_unfolded(options) &&
-                     (prepared.tets_deferred || prepared.tets.T.rows() > 0);
+  // Given tets that say where they were made (a default run's rest tets) take
+  // the unfolded shape's route as they did.
+  const bool given_unfolded =
+      given && prepared.unfolded_tet_positions.rows() > 0 && tets_from_unfolded(options);
+  bool on_unfolded = given_unfolded || (!given && tets_from_unfolded(options) &&
+                                        (prepared.tets_deferred || prepared.tets.T.rows() > 0));
   const bool contact_check = !given && tets_from_unfolded_on_contact(options);
   if (contact_check && prepared.tet_report.contact_face_pairs > 0) on_unfolded = true;
   if (!on_unfolded && prepared.tets_deferred) {
@@ -557,7 +572,8 @@ UnfoldResult unfold_prepared(const PreparedMesh& prepared, const Options& option
       options.integrate.iterations > 0 && options.method != "scf" && options.method != "lsmds";
   std::future<double> lambda2;
   if (on_unfolded) {
-    lambda2 = solve_on_unfolded_tets(options, solved, integrates, &result);
+    lambda2 = solve_on_unfolded_tets(options, solved, integrates, &result,
+                                     given_unfolded ? &prepared.unfolded_tet_positions : nullptr);
     result.tet_report.contact_face_pairs = prepared.tet_report.contact_face_pairs;
     result.tet_report.contact_bridge = contact_bridge;
   }

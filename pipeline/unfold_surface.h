@@ -44,6 +44,10 @@ struct PreparedMesh {
   /// tetrahedralize the unfolded shape instead (tets_deferred)
   TetMesh tets;
   bool tets_deferred = false;
+  /// given tets (prepare_mesh_from_tets) made on the unfolded shape: where they
+  /// were made, rows as tets.V's; the unfolded shape's route then takes them
+  /// instead of making its own; else empty
+  Eigen::MatrixX3d unfolded_tet_positions;
   TetReport tet_report;
   std::vector<std::string> warnings;
   double seconds = 0;          ///< the preparation: checks, simplification, contact, tets

@@ -133,23 +133,42 @@ TEST(TetInput, RestTetOutputGivenBackUnfoldsToTheSameCanonicalForm) {
 }
 
 // The default's rest tets (the unfolded shape's, carved by the robust route)
-// hold the surface's vertices, not all its triangles on their boundary: given
-// back with the surface they unfold, with a warning saying so; shape unfolded
-// would make tets of its own instead, and is refused.
-TEST(TetInput, DefaultRestTetsGivenBackUnfoldWithAWarning) {
+// hold the surface's vertices, not all its triangles on their boundary. Given
+// back as the .vtu the run wrote (with where they were made, "unfolded"), they
+// unfold to the same canonical form; as a .node (no such array) they unfold as
+// the input's tets, with a warning on the boundary; shape unfolded would make
+// tets of its own instead, and is refused.
+TEST(TetInput, DefaultRestTetsGivenBackUnfoldToTheSameCanonicalForm) {
   test::TempDir dir;
   const std::string shape = dir.file("shape.off");
-  write_surface_mesh(shape, make_articulated_shape(ShapePose::contact(1), 20));
-  ASSERT_EQ(run_unfold("--input " + shape + " --rest_tet_output " + dir.file("rest.vtu")).exit_code,
+  // At the demo's resolution: coarser, the interior's start no longer shows.
+  write_surface_mesh(shape, make_articulated_shape(ShapePose::preset(0)));
+  ASSERT_EQ(run_unfold("--input " + shape + " --output " + dir.file("first.off") +
+                       " --rest_tet_output " + dir.file("rest.vtu"))
+                .exit_code,
             0);
+  ASSERT_EQ(
+      run_unfold("--input " + shape + " --rest_tet_output " + dir.file("rest.node")).exit_code, 0);
+  const SurfaceMesh first = read_surface_mesh(dir.file("first.off"));
+  const TetMeshData rest = read_tet_mesh(dir.file("rest.vtu"));
+  ASSERT_EQ(rest.unfolded.rows(), rest.V.rows());
+  EXPECT_GT((rest.unfolded - rest.V).norm(), 0);  // made elsewhere than at rest
   const test::AppRun given =
       run_unfold("--input " + shape + " --tet_input " + dir.file("rest.vtu") + " --output " +
                  dir.file("given.off"));
   ASSERT_EQ(given.exit_code, 0) << given.err;
   EXPECT_NE(given.err.find("boundary is not exactly the surface"), std::string::npos) << given.err;
   const SurfaceMesh canonical = read_surface_mesh(dir.file("given.off"));
-  EXPECT_EQ(canonical.faces, read_surface_mesh(shape).faces);
-  EXPECT_TRUE(canonical.V.allFinite());
+  EXPECT_EQ(canonical.faces, first.faces);
+  const double size = (first.V.colwise().maxCoeff() - first.V.colwise().minCoeff()).norm();
+  EXPECT_LT(max_difference(canonical.V, first.V), 1e-9 * size);
+
+  const test::AppRun node = run_unfold("--input " + shape + " --tet_input " +
+                                       dir.file("rest.node") + " --output " + dir.file("node.off"));
+  ASSERT_EQ(node.exit_code, 0) << node.err;
+  const SurfaceMesh from_node = read_surface_mesh(dir.file("node.off"));
+  EXPECT_TRUE(from_node.V.allFinite());
+  EXPECT_GT(max_difference(from_node.V, first.V), 1e-6 * size);  // another route: the test sees it
   test::expect_failure("--tet_shape unfolded --input " + shape + " --tet_input " +
                            dir.file("rest.vtu") + " --output " + dir.file("never.off"),
                        2, "tetrahedralize.shape: unfolded", dir.file("never.off"));

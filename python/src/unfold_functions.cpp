@@ -40,6 +40,7 @@ py::dict result_dict(const UnfoldResult& r, const TetMeshFields& fields, const O
   d["tet_vertices"] = Vertices(r.tet_canonical);
   d["tets"] = Elements(r.tets.T);
   d["rest_tet_vertices"] = Vertices(r.tets.V);
+  d["unfolded_tet_vertices"] = Vertices(r.unfolded_tet_positions);
   d["tet_vertex_fields"] = named_fields(fields.per_vertex);
   d["tet_fields"] = named_fields(fields.per_tet);
   d["skeleton_nodes"] = Vertices(r.skeleton.nodes);
@@ -68,7 +69,8 @@ void def_unfold_functions(py::module_& m) {
       "unfold",
       [](const Vertices& V, const Elements& F, const std::string& config_path,
          const Overrides& overrides, const std::optional<Elements>& tets,
-         const std::optional<Vertices>& tet_vertices) {
+         const std::optional<Vertices>& tet_vertices,
+         const std::optional<Vertices>& unfolded_tet_vertices) {
         const Options options = load_options(config_path, overrides);
         const SurfaceMesh surface = make_surface(V, F);
         UnfoldResult result;
@@ -77,16 +79,20 @@ void def_unfold_functions(py::module_& m) {
           py::gil_scoped_release nogil;
           use_threads(options);
           // A given tet mesh (tets over tet_vertices) whose boundary is the surface.
-          result = tets ? unfold_prepared(prepare_mesh_from_tets(surface, *tet_vertices,
-                                                                 Eigen::MatrixX4i(*tets), options),
-                                          options)
+          result = tets ? unfold_prepared(
+                              prepare_mesh_from_tets(
+                                  surface, *tet_vertices, Eigen::MatrixX4i(*tets), options,
+                                  unfolded_tet_vertices ? Eigen::MatrixX3d(*unfolded_tet_vertices)
+                                                        : Eigen::MatrixX3d()),
+                              options)
                         : unfold_surface(surface, options);
           fields = canonical_tet_fields(result);
         }
         return result_dict(result, fields, options);
       },
       py::arg("V"), py::arg("F"), py::arg("config_path"), py::arg("overrides"),
-      py::arg("tets") = std::nullopt, py::arg("tet_vertices") = std::nullopt);
+      py::arg("tets") = std::nullopt, py::arg("tet_vertices") = std::nullopt,
+      py::arg("unfolded_tet_vertices") = std::nullopt);
   m.def(
       "compare",
       [](const Vertices& V, const Elements& F,

@@ -57,3 +57,19 @@ def test_python_takes_the_tets_and_checks_the_boundary(first_run, demo):
         unfold.unfold(V, F, tets=tets.cells[0].data, tet_vertices=moved)
     with pytest.raises(unfold.InputError, match="give both"):
         unfold.unfold(V, F, tets=tets.cells[0].data)
+
+
+def test_the_defaults_tets_given_back_with_where_they_were_made_unfold_as_they_did(demo):
+    V, F = demo
+    first = unfold.unfold(V, F)
+    assert first.unfolded_tet_vertices.shape == first.rest_tet_vertices.shape
+    again = unfold.unfold(V, F, tets=first.tets, tet_vertices=first.rest_tet_vertices,
+                          unfolded_tet_vertices=first.unfolded_tet_vertices)
+    assert again.metrics["tetrahedralization"]["route"] == "given"
+    np.testing.assert_allclose(again.vertices, first.vertices, atol=1e-12)
+    np.testing.assert_array_equal(again.unfolded_tet_vertices, first.unfolded_tet_vertices)
+    with pytest.raises(unfold.InputError, match="rows"):
+        unfold.unfold(V, F, tets=first.tets, tet_vertices=first.rest_tet_vertices,
+                      unfolded_tet_vertices=first.unfolded_tet_vertices[1:])
+    volume = unfold.unfold(V, F, domain="volume")  # the input's tets: made at rest
+    assert volume.unfolded_tet_vertices.shape == (0, 3)

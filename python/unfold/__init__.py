@@ -49,6 +49,9 @@ class Result:
         are the surface's vertices.
     tets: (T, 4) int32 tetrahedra.
     rest_tet_vertices: (N, 3) rest positions of every tet vertex.
+    unfolded_tet_vertices: (N, 3) where the tets were made when that is not
+        the rest (the unfolded shape's tets, the default), else (0, 3): given
+        back with tets and rest_tet_vertices, they unfold as they did.
     tet_vertex_fields, tet_fields: per tet vertex (rigidity_error,
         stretch_ratio, edge_damage) and per tet (volume_ratio, rigidity), as written to
         --tet_output x.vtu.
@@ -64,6 +67,7 @@ class Result:
     tet_vertices: np.ndarray
     tets: np.ndarray
     rest_tet_vertices: np.ndarray
+    unfolded_tet_vertices: np.ndarray = field(repr=False)
     tet_vertex_fields: dict[str, np.ndarray] = field(repr=False)
     tet_fields: dict[str, np.ndarray] = field(repr=False)
     skeleton_nodes: np.ndarray = field(repr=False)
@@ -129,7 +133,7 @@ def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarr
 
 def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
            tets: npt.ArrayLike | None = None, tet_vertices: npt.ArrayLike | None = None,
-           **overrides: Any) -> Result:
+           unfolded_tet_vertices: npt.ArrayLike | None = None, **overrides: Any) -> Result:
     """Unfolds a closed triangle surface into its canonical pose.
 
     V: (n, 3) positions (any real dtype and layout); F: (m, 3) integer faces.
@@ -145,6 +149,9 @@ def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
     surface ((k, 4) indices into the (p, 3) tet_vertices, e.g. from TetWild or
     meshio): its boundary must be the surface (same positions), else
     InputError; the Result's tets are then these, the surface's vertices first.
+    unfolded_tet_vertices: with them, where they were made (a Result's
+    unfolded_tet_vertices, as --rest_tet_output's "unfolded" array): the
+    default then unfolds them as the run that made them did.
 
     Returns a Result. Raises ConfigError (bad key or value), InputError (bad
     arrays or surface), NumericalError (the solve failed). The GIL is released
@@ -157,7 +164,14 @@ def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
     if tets is not None:
         tet_vertices = _arrays.vertices(tet_vertices, "tet_vertices")
         tets = _arrays.elements(tets, len(tet_vertices), 4, "tets")
-    return Result(**_core.unfold(V, F, path, flat, tets, tet_vertices))
+    if unfolded_tet_vertices is not None:
+        if tets is None:
+            raise InputError("unfolded_tet_vertices goes with tets and tet_vertices")
+        unfolded_tet_vertices = _arrays.vertices(unfolded_tet_vertices, "unfolded_tet_vertices")
+        if len(unfolded_tet_vertices) != len(tet_vertices):
+            raise InputError(f"unfolded_tet_vertices has {len(unfolded_tet_vertices)} rows, "
+                             f"tet_vertices {len(tet_vertices)}")
+    return Result(**_core.unfold(V, F, path, flat, tets, tet_vertices, unfolded_tet_vertices))
 
 
 def compare(V: npt.ArrayLike, F: npt.ArrayLike,
