@@ -2,7 +2,6 @@
 
 #include <Spectra/SymEigsShiftSolver.h>
 
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <numeric>
 #include <string>
@@ -10,38 +9,9 @@
 #include "core/errors.h"
 #include "mesh/cotangent_laplacian.h"
 #include "mesh/lumped_masses.h"
+#include "solvers/mass_shift_invert.h"
 
 namespace unfold {
-namespace {
-
-// The shift-invert operator of the symmetric form M^{-1/2} W M^{-1/2}:
-// (M^{-1/2} W M^{-1/2} - sigma I)^{-1} = M^{1/2} (W - sigma M)^{-1} M^{1/2}.
-class MassShiftSolve {
- public:
-  using Scalar = double;
-  MassShiftSolve(const Eigen::SparseMatrix<double>& W, const Eigen::VectorXd& masses)
-      : W_(W), masses_(masses), sqrt_masses_(masses.cwiseSqrt()) {}
-  Eigen::Index rows() const { return W_.rows(); }
-  Eigen::Index cols() const { return W_.cols(); }
-  void set_shift(double sigma) {
-    solver_.compute(W_ - sigma * Eigen::SparseMatrix<double>(masses_.asDiagonal()));
-    if (solver_.info() != Eigen::Success)
-      throw NumericalError("factorizing the shifted cotangent Laplacian failed");
-  }
-  void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
-    Eigen::Map<Eigen::VectorXd> y(y_out, rows());
-    y = sqrt_masses_.cwiseProduct(solver_.solve(sqrt_masses_.cwiseProduct(x)));
-  }
-
- private:
-  const Eigen::SparseMatrix<double>& W_;
-  const Eigen::VectorXd& masses_;
-  Eigen::VectorXd sqrt_masses_;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
-};
-
-}  // namespace
 
 LaplaceBeltramiBasis laplace_beltrami_basis(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
                                             int count) {
@@ -54,9 +24,9 @@ LaplaceBeltramiBasis laplace_beltrami_basis(const Eigen::MatrixX3d& V, const Eig
   basis.masses = lumped_masses(V, F);
   // Below the zero eigenvalue by a small fraction of the operator's scale.
   const double sigma = -1e-8 * W.diagonal().maxCoeff() / basis.masses.mean();
-  MassShiftSolve op(W, basis.masses);
+  MassShiftInvert op(W, basis.masses, false, "the shifted cotangent Laplacian");
   const int ncv = std::min(n, std::max(2 * count + 1, count + 20));
-  Spectra::SymEigsShiftSolver<MassShiftSolve> eigs(op, count, ncv, sigma);
+  Spectra::SymEigsShiftSolver<MassShiftInvert> eigs(op, count, ncv, sigma);
   eigs.init();
   eigs.compute(Spectra::SortRule::LargestMagn, 1000, 1e-8);
   if (eigs.info() != Spectra::CompInfo::Successful)
