@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,12 @@
 #include "mesh/write_polyline.h"
 #include "mesh/write_surface_mesh.h"
 #include "mesh/write_tet_mesh.h"
+#include "metrics/worst_region.h"
 #include "pipeline/beta_sweep.h"
 #include "pipeline/convergence_csv.h"
 #include "pipeline/metrics_json.h"
 #include "pipeline/prepare_mesh_from_tets.h"
+#include "pipeline/region_pictures.h"
 #include "pipeline/result_pictures.h"
 #include "pipeline/tet_fields.h"
 #include "pipeline/unfold_surface.h"
@@ -60,6 +63,13 @@ DEFINE_string(render_color, "shading",
               "colouring of the canonical pose in --render: shading, rigidity (per-vertex "
               "rigidity error), or damage (per vertex the largest |ln r| of its surface edges' "
               "length ratios at the input's area; ln 3 = 1.1 is the damage bound)");
+DEFINE_string(render_focus, "",
+              "--render a close-up of one region instead of the whole shape: 'worst' (the vertex "
+              "with the most stretched or crushed surface edge) or a vertex index; the input and "
+              "the canonical pose each seen face on, whatever lies in front of it cut away");
+DEFINE_double(render_focus_radius, unfold::kRegionRadiusFraction,
+              "--render_focus: the region's radius as a fraction of the input's bounding-box "
+              "diagonal, in (0, 1] (on the canonical pose at the input's area)");
 DEFINE_bool(render_skeleton, false,
             "method scf: draw the curve skeleton in --render (the input's over the input, the "
             "straightened one over the canonical pose)");
@@ -118,6 +128,25 @@ int run() {
       (options.method != "scf" || FLAGS_render.empty() || !FLAGS_beta_sweep.empty()))
     throw unfold::UsageError(
         "--render_skeleton needs method: scf and --render, without --beta_sweep");
+  // --render_focus: -1 for the worst region, else the vertex; none: the whole shape.
+  std::optional<int> focus;
+  if (!FLAGS_render_focus.empty()) {
+    if (FLAGS_render.empty() || !FLAGS_beta_sweep.empty() || FLAGS_render_skeleton)
+      throw unfold::UsageError(
+          "--render_focus needs --render, without --beta_sweep or --render_skeleton");
+    if (FLAGS_render_focus == "worst") {
+      focus = -1;
+    } else {
+      const std::string& text = FLAGS_render_focus;
+      if (text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+        throw unfold::UsageError("--render_focus: '" + text +
+                                 "' is neither 'worst' nor a vertex index");
+      focus = std::stoi(text);
+    }
+  }
+  if (!(FLAGS_render_focus_radius > 0 && FLAGS_render_focus_radius <= 1))
+    throw unfold::UsageError("--render_focus_radius: " + std::to_string(FLAGS_render_focus_radius) +
+                             " is not in (0, 1]");
   std::vector<double> sweep;
   if (!FLAGS_beta_sweep.empty()) {
     sweep = unfold::parse_beta_list(FLAGS_beta_sweep);
@@ -139,6 +168,10 @@ int run() {
   } else {
     surface = unfold::read_surface_mesh(FLAGS_input);
   }
+  // Simplification renumbers the vertices; otherwise refuse a bad index before the work.
+  if (focus && *focus >= surface.V.rows() && options.target_vertices == 0)
+    throw unfold::UsageError("--render_focus: vertex " + std::to_string(*focus) +
+                             " is not in [0, " + std::to_string(surface.V.rows()) + ")");
   const unfold::UnfoldResult result =
       FLAGS_tet_input.empty() ? unfold::unfold_surface(surface, options)
                               : unfold::unfold_prepared(unfold::prepare_mesh_from_tets(
@@ -177,6 +210,10 @@ int run() {
     unfold::write_png(FLAGS_render,
                       unfold::render_beta_sweep(unfold::unfold_beta_sweep(result, options, sweep),
                                                 sweep, render));
+  else if (focus)
+    unfold::write_png(FLAGS_render, unfold::render_region_before_after(
+                                        result, *focus, FLAGS_render_focus_radius, render.up_axis,
+                                        unfold::surface_coloring(FLAGS_render_color)));
   else if (!FLAGS_render.empty())
     unfold::write_png(
         FLAGS_render,
@@ -230,7 +267,8 @@ int main(int argc, char** argv) {
       {"Linear solver (method local_global)", {}},
       {"Energy terms", {}},
       {"Metrics and pictures",
-       {"render", "render_color", "render_skeleton", "render_up", "beta_sweep", "convergence_png"}},
+       {"render", "render_color", "render_skeleton", "render_up", "render_focus",
+        "render_focus_radius", "beta_sweep", "convergence_png"}},
   };
   help.config_key_flags = true;
   return unfold::app::run_main("unfold", help, argc, argv, run);

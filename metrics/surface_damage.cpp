@@ -61,6 +61,7 @@ SurfaceDamage surface_damage(const Eigen::MatrixX3d& V_in, const Eigen::MatrixX3
   SurfaceDamage d;
   d.scale = std::sqrt(area_in / area_out);
   d.per_vertex = Eigen::VectorXd::Zero(n);
+  d.per_vertex_ratio = Eigen::VectorXd::Ones(n);
   std::vector<double> ratios;
   ratios.reserve(edges.size());
   const double collapsed = -std::log(std::numeric_limits<double>::min());
@@ -74,8 +75,11 @@ SurfaceDamage surface_damage(const Eigen::MatrixX3d& V_in, const Eigen::MatrixX3
     ratios.push_back(r);
     if (r < 1 / bound || r > bound) ++d.damaged_edges;
     const double damage = r > 0 ? std::abs(std::log(r)) : collapsed;
-    d.per_vertex[i] = std::max(d.per_vertex[i], damage);
-    d.per_vertex[j] = std::max(d.per_vertex[j], damage);
+    for (const int v : {i, j})
+      if (damage > d.per_vertex[v]) {
+        d.per_vertex[v] = damage;
+        d.per_vertex_ratio[v] = r;
+      }
   }
   d.edges = int(ratios.size());
   if (ratios.empty()) return d;

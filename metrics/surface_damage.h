@@ -30,6 +30,8 @@ struct SurfaceDamage {
   /// intact); ln 3 = 1.0986 is the damage bound; a collapsed edge (r = 0)
   /// counts as |ln DBL_MIN| = 708.4, so that every value is finite
   Eigen::VectorXd per_vertex;
+  /// per vertex: the ratio r of that edge (> 1 stretched, < 1 crushed; 1: none)
+  Eigen::VectorXd per_vertex_ratio;
 };
 
 /// The damage of a deformed surface against its rest shape, over its unique

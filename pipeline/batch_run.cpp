@@ -34,6 +34,7 @@
 #include "pipeline/cmbof_vocabulary.h"
 #include "pipeline/metrics_json.h"
 #include "pipeline/pose_invariance_tables.h"
+#include "pipeline/region_pictures.h"
 #include "pipeline/retrieval_descriptors.h"
 #include "pipeline/similarity_blocks.h"
 #include "pipeline/unfold_surface.h"
@@ -666,6 +667,7 @@ void write_dataset_evaluation(const std::string& output_dir, const std::vector<s
       for (const auto& method_forms : on_input) poses.back().forms.push_back(method_forms[i]);
     }
   write_pose_invariance_tables(output_dir, labels, poses);
+  write_worst_region_pictures(output_dir, labels, poses);
   write_file_atomically(output_dir + "/retrieval.csv",
                         [&](std::ostream& s) { s << retrieval.str(); });
 }

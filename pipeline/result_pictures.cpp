@@ -13,20 +13,25 @@ SurfaceColoring surface_coloring(const std::string& name) {
   throw UsageError("'" + name + "' is not shading, rigidity or damage");
 }
 
+Eigen::VectorXd surface_coloring_values(const UnfoldResult& result, SurfaceColoring coloring) {
+  if (coloring == SurfaceColoring::kRigidity)
+    return result.metrics.rigidity_per_vertex.head(result.canonical.V.rows());
+  if (coloring == SurfaceColoring::kDamage) {
+    if (result.metrics.damage.per_vertex.size() != result.canonical.V.rows())
+      throw UsageError("render_before_after: the result has no per-vertex damage");
+    return result.metrics.damage.per_vertex;
+  }
+  return {};
+}
+
 Image render_before_after(const UnfoldResult& result, const RenderOptions& options,
                           SurfaceColoring coloring, bool draw_skeleton) {
   const Eigen::MatrixX3i F = triangulate_faces(result.surface);
   RenderPanel before{"input", result.surface.V, F, {}};
   RenderPanel after{"canonical", result.canonical.V, F, {}};
-  if (coloring == SurfaceColoring::kRigidity) {
-    after.title = "canonical: rigidity error";
-    after.values = result.metrics.rigidity_per_vertex.head(result.canonical.V.rows());
-  } else if (coloring == SurfaceColoring::kDamage) {
-    if (result.metrics.damage.per_vertex.size() != result.canonical.V.rows())
-      throw UsageError("render_before_after: the result has no per-vertex damage");
-    after.title = "canonical: edge damage";
-    after.values = result.metrics.damage.per_vertex;
-  }
+  after.values = surface_coloring_values(result, coloring);
+  if (coloring == SurfaceColoring::kRigidity) after.title = "canonical: rigidity error";
+  if (coloring == SurfaceColoring::kDamage) after.title = "canonical: edge damage";
   if (draw_skeleton) {
     const CurveSkeleton& s = result.skeleton;
     if (s.edges.rows() == 0 || result.skeleton_canonical.rows() != s.nodes.rows())

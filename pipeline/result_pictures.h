@@ -19,6 +19,11 @@ enum class SurfaceColoring {
 /// "shading", "rigidity" or "damage". @throws UsageError for another name
 SurfaceColoring surface_coloring(const std::string& name);
 
+/// The per-vertex values `coloring` paints the canonical surface with (empty
+/// for kShading).
+/// @throws UsageError if the result lacks them (no per-vertex damage)
+Eigen::VectorXd surface_coloring_values(const UnfoldResult& result, SurfaceColoring coloring);
+
 /// The unfolded surface before (left half) and after (right half), side and top
 /// views, same cameras and scale in both halves.
 /// @param coloring colour the canonical surface by a per-vertex value (the

@@ -14,6 +14,16 @@ Eigen::MatrixX3d in_view(const Eigen::MatrixX3d& V, const View& view) {
   return V * view.axes.transpose();
 }
 
+// Pixels of view coordinates W with the view-coordinate point `center` at the panel's centre.
+Eigen::MatrixX3d to_pixels(const Eigen::MatrixX3d& W, const Eigen::RowVector3d& center,
+                           double scale, int width, int height) {
+  Eigen::MatrixX3d pixels(W.rows(), 3);
+  pixels.col(0) = (W.col(0).array() - center[0]) * scale + 0.5 * width;
+  pixels.col(1) = (center[1] - W.col(1).array()) * scale + 0.5 * height;
+  pixels.col(2) = -W.col(2);  // the third axis points at the viewer
+  return pixels;
+}
+
 }  // namespace
 
 int axis_index(const std::string& name, const std::string& what) {
@@ -50,6 +60,24 @@ std::vector<View> side_and_top_views(const Eigen::MatrixX3d& V, int up_axis) {
   return {side, top};
 }
 
+View view_facing(const Eigen::Vector3d& normal, int up_axis) {
+  if (up_axis < 0 || up_axis > 2)
+    throw UsageError("render: up axis must be 0, 1 or 2 (x, y, z), not " + std::to_string(up_axis));
+  if (!normal.allFinite() || normal.norm() == 0)
+    throw UsageError("view_facing: the normal must be finite and nonzero");
+  const Eigen::Vector3d towards = normal.normalized();
+  // Screen up: the up axis without its part along the normal; when that part
+  // is nearly all of it (looking down or up), the next axis instead.
+  Eigen::Vector3d up = Eigen::Vector3d::Unit(up_axis);
+  if (std::abs(up.dot(towards)) > 0.95) up = Eigen::Vector3d::Unit((up_axis + 1) % 3);
+  up = (up - up.dot(towards) * towards).normalized();
+  View view{"facing", Eigen::Matrix3d()};
+  view.axes.row(0) = up.cross(towards);
+  view.axes.row(1) = up;
+  view.axes.row(2) = towards;
+  return view;
+}
+
 double common_scale(const std::vector<const Eigen::MatrixX3d*>& shapes, const View& view, int width,
                     int height, int margin) {
   double scale = 0;
@@ -74,11 +102,12 @@ Eigen::MatrixX3d project_in_frame(const Eigen::MatrixX3d& points, const Eigen::M
   if (W.rows() == 0 || V.rows() == 0) return W;
   const Eigen::MatrixX3d frame = in_view(V, view);
   const Eigen::RowVector3d center = 0.5 * (frame.colwise().maxCoeff() + frame.colwise().minCoeff());
-  Eigen::MatrixX3d pixels(W.rows(), 3);
-  pixels.col(0) = (W.col(0).array() - center[0]) * scale + 0.5 * width;
-  pixels.col(1) = (center[1] - W.col(1).array()) * scale + 0.5 * height;
-  pixels.col(2) = -W.col(2);  // the third axis points at the viewer
-  return pixels;
+  return to_pixels(W, center, scale, width, height);
+}
+
+Eigen::MatrixX3d project_about(const Eigen::MatrixX3d& points, const Eigen::Vector3d& centre,
+                               const View& view, double scale, int width, int height) {
+  return to_pixels(in_view(points, view), (view.axes * centre).transpose(), scale, width, height);
 }
 
 }  // namespace unfold

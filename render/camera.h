@@ -26,6 +26,15 @@ int axis_index(const std::string& name, const std::string& what);
 /// @throws UsageError for another up_axis
 std::vector<View> side_and_top_views(const Eigen::MatrixX3d& V, int up_axis);
 
+/// A view looking at a surface face on: towards -`normal` (the viewer on the
+/// side `normal` points to), screen up as near the shape's up axis as the
+/// normal allows (the next axis when the normal is nearly vertical), so that
+/// close-ups of different shapes stand the same way up.
+/// @param normal  any nonzero direction, e.g. a region's mean normal
+/// @param up_axis 0, 1 or 2 (x, y, z)
+/// @throws UsageError for another up_axis or a zero or non-finite normal
+View view_facing(const Eigen::Vector3d& normal, int up_axis);
+
 /// The largest pixels-per-unit scale at which every shape fits a width x height
 /// panel with `margin` pixels to spare on each side, each centred on its own
 /// bounding box; 1 if all shapes are empty or points.
@@ -36,6 +45,12 @@ double common_scale(const std::vector<const Eigen::MatrixX3d*>& shapes, const Vi
 /// through `view` at `scale`, its bounding box centred in a width x height panel.
 Eigen::MatrixX3d project(const Eigen::MatrixX3d& V, const View& view, double scale, int width,
                          int height);
+
+/// project() of `points` with the point `centre` at the panel's centre
+/// instead of a bounding box's: a close-up (points outside the panel get
+/// pixel coordinates outside it, for the rasteriser to clip).
+Eigen::MatrixX3d project_about(const Eigen::MatrixX3d& points, const Eigen::Vector3d& centre,
+                               const View& view, double scale, int width, int height);
 
 /// project() of `points` in the frame of V: placed where project(V, ...) puts
 /// the same positions (V's bounding box centred), e.g. lines drawn over V.

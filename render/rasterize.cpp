@@ -24,7 +24,7 @@ void rasterize_triangle(const Eigen::Matrix3d& xyz, const Eigen::Matrix3f& color
       [&](int x, int y, const Eigen::Vector3d& w) {
         const double z = w[0] * xyz(0, 2) + w[1] * xyz(1, 2) + w[2] * xyz(2, 2);
         double& stored = canvas->depth[size_t(y) * size_t(image.width) + size_t(x)];
-        if (!(z < stored)) return;
+        if (!(z < stored) || z < canvas->near_depth) return;
         stored = z;
         const Eigen::Vector3f color = float(w[0]) * colors.row(0).transpose() +
                                       float(w[1]) * colors.row(1).transpose() +

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -28,14 +29,7 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
       throw UsageError("render_comparison: panel '" + p.title + "' has a line to a point of " +
                        std::to_string(p.line_points.rows()) + " that does not exist");
   }
-  // The colour scale ends at the 98th percentile: a few extreme vertices would
-  // otherwise push every other one into the darkest colours.
-  double value_max = 0;
-  if (!values.empty()) {
-    auto at = values.begin() + std::ptrdiff_t(0.98 * double(values.size() - 1));
-    std::nth_element(values.begin(), at, values.end());
-    value_max = *at;
-  }
+  const double value_max = color_scale_top(std::move(values));
   const std::vector<View> views = side_and_top_views(panels.front().V, options.up_axis);
   const int s = options.supersample;
   const int w = options.panel_width * s, h = options.panel_height * s;
@@ -73,18 +67,10 @@ Image render_comparison(const std::vector<RenderPanel>& panels, const RenderOpti
               int(col) * options.panel_width + std::max(2, (options.panel_width - tw) / 2),
               (kCaptionHeight - th) / 2 + 2, ink, 2, &out);
   }
-  if (value_max > 0) {  // colour bar legend, bottom right
-    const int bar_w = 120, bar_h = 8, x0 = out.width - bar_w - 10, y0 = out.height - bar_h - 8;
-    for (int x = 0; x < bar_w; ++x) {
-      const Eigen::Vector3f c = color_map(double(x) / (bar_w - 1));
-      fill_rect(x0 + x, y0, x0 + x + 1, y0 + bar_h,
-                {std::uint8_t(c[0] * 255), std::uint8_t(c[1] * 255), std::uint8_t(c[2] * 255)},
-                &out);
-    }
+  if (value_max > 0) {
     char label[64];
     std::snprintf(label, sizeof label, "0 .. %.3g+", value_max);
-    const auto [tw, th] = text_size(label, 1);
-    draw_text(label, x0 - tw - 6, y0 - 1, ink, 1, &out);
+    draw_color_bar(label, &out);
   }
   return out;
 }

@@ -15,11 +15,11 @@ float lambert(const Eigen::Vector3d& normal, const View& view) {
   return float(0.35 + 0.65 * std::abs(normal.dot(view.axes.row(2).transpose())) / norm);
 }
 
-}  // namespace
-
-void render_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-                 const Eigen::MatrixX3f& colors, const View& view, double scale, Shading shading,
-                 Canvas* canvas) {
+// Draws the triangles F of V with their corners at `pixels` (a row per vertex of V:
+// project()'s or project_about()'s).
+void render_projected(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                      const Eigen::MatrixX3f& colors, const View& view,
+                      const Eigen::MatrixX3d& pixels, Shading shading, Canvas* canvas) {
   if (colors.rows() != 0 && colors.rows() != V.rows())
     throw UsageError("render_mesh: " + std::to_string(colors.rows()) + " colours for " +
                      std::to_string(V.rows()) + " vertices");
@@ -37,8 +37,6 @@ void render_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     face_normals.row(f) = (b - a).cross(c - a).transpose();
     for (int k = 0; k < 3; ++k) vertex_normals.row(F(f, k)) += face_normals.row(f);
   }
-  const Eigen::MatrixX3d pixels =
-      project(V, view, scale, canvas->image.width, canvas->image.height);
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     Eigen::Matrix3d xyz;
     Eigen::Matrix3f rgb;
@@ -54,6 +52,25 @@ void render_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
     }
     rasterize_triangle(xyz, rgb, canvas);
   }
+}
+
+}  // namespace
+
+void render_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                 const Eigen::MatrixX3f& colors, const View& view, double scale, Shading shading,
+                 Canvas* canvas) {
+  render_projected(V, F, colors, view,
+                   project(V, view, scale, canvas->image.width, canvas->image.height), shading,
+                   canvas);
+}
+
+void render_mesh_about(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                       const Eigen::MatrixX3f& colors, const View& view,
+                       const Eigen::Vector3d& centre, double scale, Shading shading,
+                       Canvas* canvas) {
+  render_projected(V, F, colors, view,
+                   project_about(V, centre, view, scale, canvas->image.width, canvas->image.height),
+                   shading, canvas);
 }
 
 }  // namespace unfold

@@ -20,4 +20,12 @@ void render_mesh(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
                  const Eigen::MatrixX3f& colors, const View& view, double scale, Shading shading,
                  Canvas* canvas);
 
+/// render_mesh() with the point `centre` at the canvas centre instead of V's
+/// bounding box's centre: a close-up, the triangles reaching outside the
+/// canvas clipped by the rasteriser.
+void render_mesh_about(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
+                       const Eigen::MatrixX3f& colors, const View& view,
+                       const Eigen::Vector3d& centre, double scale, Shading shading,
+                       Canvas* canvas);
+
 }  // namespace unfold

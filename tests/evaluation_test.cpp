@@ -146,6 +146,10 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
       << "raw poses have ratio 1, shared vertex order: " << raw_row;
   for (const char* method : {"raw", "default", "lsmds"})
     EXPECT_TRUE(std::filesystem::exists(out + "/poses_body_" + method + ".png")) << method;
+  // The worst regions of every method's forms; the raw poses are the input itself.
+  for (const char* method : {"default", "lsmds"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/worst_body_" + method + ".png")) << method;
+  EXPECT_FALSE(std::filesystem::exists(out + "/worst_body_raw.png"));
 }
 
 // Shards unfold their shapes, then (once every shape is done) compute their

@@ -247,6 +247,22 @@ TEST(RenderCli, DemoBeforeAfterAndConvergence) {
     EXPECT_TRUE(test::Contains(text.str(), field));
 }
 
+// --render_focus worst: two close-ups (input, canonical), each showing the
+// surface at its centre, where the region is.
+TEST(RenderCli, FocusOnTheWorstRegionOfTheDemo) {
+  test::TempDir dir;
+  const std::string picture = dir.file("worst.png");
+  ASSERT_EQ(run_unfold("--demo_pose 1 --render " + picture +
+                       " --render_focus worst --render_color damage"),
+            0);
+  const Png png = read_png(picture);
+  const int tile = 360;
+  ASSERT_EQ(png.width, 2 * tile);
+  ASSERT_GT(png.height, kCaptionHeight + tile);
+  for (int col = 0; col < 2; ++col)
+    EXPECT_FALSE(png.white(col * tile + tile / 2, kCaptionHeight + tile / 2)) << col;
+}
+
 TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {
   test::TempDir dir;
   const std::string picture = dir.file("sweep.png"), input = dir.file("ellipsoid.off");
