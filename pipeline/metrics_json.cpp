@@ -11,6 +11,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
   const UnfoldMetrics& m = r.metrics;
   const CascadeResult& c = r.cascade;
   JsonArray warnings(r.warnings.begin(), r.warnings.end());
+  JsonObject stages;  // every stage run, in order (pipeline/run_stages.h)
+  for (const StageTime& t : r.stage_seconds) stages.emplace_back(t.name, t.seconds);
   JsonArray history;
   for (const IterationRecord& h : c.history)
     history.push_back(JsonObject{{"iteration", h.iteration},
@@ -84,6 +86,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"seconds_integration", r.seconds_integration},
       {"seconds_anchored", r.seconds_anchored},
       {"seconds_metrics", m.seconds},
+      {"stages", stages},
       {"method", options.method},
       {"warnings", warnings},
       {"history", history}};

@@ -107,6 +107,14 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
     merged.seconds_contact += r.seconds_contact;
     merged.seconds_lambda2 += r.seconds_lambda2;
     merged.seconds_cascade += r.seconds_cascade;
+    for (const StageTime& stage : r.stage_seconds) {  // each stage's seconds summed over components
+      auto same = std::find_if(merged.stage_seconds.begin(), merged.stage_seconds.end(),
+                               [&stage](const StageTime& t) { return t.name == stage.name; });
+      if (same == merged.stage_seconds.end())
+        merged.stage_seconds.push_back(stage);
+      else
+        same->seconds += stage.seconds;
+    }
     if (r.linear_solver != merged.linear_solver) merged.linear_solver = "mixed";
     merged.amg_levels = std::max(merged.amg_levels, r.amg_levels);
     merged.seconds_amg += r.seconds_amg;

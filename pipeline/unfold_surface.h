@@ -36,6 +36,13 @@ struct UnfoldMetrics {
   Eigen::VectorXd rigidity_per_vertex;
 };
 
+/// One stage's wall seconds, as the stage driver measured it
+/// (pipeline/run_stages.h).
+struct StageTime {
+  std::string name;
+  double seconds = 0;
+};
+
 /// A surface checked, simplified if asked, and tetrahedralized: what every
 /// solver run on it shares.
 struct PreparedMesh {
@@ -50,8 +57,10 @@ struct PreparedMesh {
   Eigen::MatrixX3d unfolded_tet_positions;
   TetReport tet_report;
   std::vector<std::string> warnings;
-  double seconds = 0;          ///< the preparation: checks, simplification, contact, tets
-  double seconds_contact = 0;  ///< shape auto: its intersecting faces checked for contact
+  /// the preparation's stages (checks and simplification, contact, tets) in order
+  std::vector<StageTime> stage_seconds;
+  double seconds = 0;          ///< the preparation: its stages' seconds summed
+  double seconds_contact = 0;  ///< shape contact: its intersecting faces checked for contact
 };
 
 struct UnfoldResult {
@@ -85,6 +94,9 @@ struct UnfoldResult {
   double seconds_integration = 0;  ///< integrate: the rotation field integrated (one step)
   double seconds_anchored = 0;     ///< integrate: the anchored ARAP steps after it
   std::vector<std::string> warnings;
+  /// every stage run, the preparation's included, in order; the seconds_* fields
+  /// above are sums of these (pipeline/run_stages.h)
+  std::vector<StageTime> stage_seconds;
   CurveSkeleton skeleton;               ///< method scf: the input's curve skeleton, else empty
   Eigen::MatrixX3d skeleton_canonical;  ///< method scf: its straightened nodes, placed as canonical
 };

@@ -7,10 +7,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "mesh/edge_graph.h"
+#include "solvers/arap_solve.h"
 
 namespace unfold {
 
@@ -30,29 +33,46 @@ struct IntegrateOptions {
   double surface_edges = 0;
 };
 
-/// Where integrate_rotation_field spent its time (wall seconds).
-struct IntegrateTimes {
-  double integration = 0;  ///< the first step: the rotation field integrated
-  double anchored = 0;     ///< the anchored steps after it
+/// The first step done (integrate_rotations) and what the anchored steps after
+/// it need: their factorization, being made on another thread meanwhile.
+struct IntegratedRotations {
+  Eigen::MatrixX3d positions;  ///< the integrated field (n x 3); Q when iterations is 0
+  ArapSolveOptions anchored;   ///< the anchored steps' options
+  std::future<std::unique_ptr<SparseLdlt>> anchored_factor;  ///< invalid: none made
 };
 
 /// Integrates the rotation field of `Q` (best rotations from P, per vertex):
-/// one ARAP step from Q with one vertex held, then up to iterations - 1 ARAP
-/// steps anchored to that step's result with weight anchor * lambda2.
-/// @param graph   edge graph of the tet mesh, connected
+/// one ARAP step from Q with one vertex held. The anchored steps' factor
+/// depends on neither the integration nor its result: it is made on another
+/// thread meanwhile (CHOLMOD factorizes on one thread, and so does the
+/// integration's own factor).
+/// @param graph   edge graph of the tet mesh, connected; it and P must outlive
+///        the result's anchored_factor
 /// @param P       rest positions (n x 3)
 /// @param Q       positions whose rotation field is integrated (n x 3)
 /// @param lambda2 the anchor's unit, > 0: a lambda_2 (fiedler_value) of the shape, e.g.
 ///        of its surface's graph Laplacian, the same for every pose
-/// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0
-/// @param times   optional: the two parts' seconds
 /// @param edge_factors optional: per edge of `graph` (its order), a factor of the
 ///        steps' weights (ArapSolveOptions::edge_factors); empty: none
 /// @throws UsageError for mismatched sizes, negative options or unknown weights
+IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                        const Eigen::MatrixX3d& Q, double lambda2,
+                                        const IntegrateOptions& options,
+                                        const std::vector<double>& edge_factors = {});
+
+/// Up to iterations - 1 ARAP steps anchored to the integrated field with weight
+/// anchor * lambda2 (integrate_rotations' options).
+/// @return zero-mean positions (n x 3)
+/// @throws UsageError for mismatched sizes
+Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                IntegratedRotations integrated);
+
+/// integrate_rotations, then anchored_steps.
+/// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0
+/// @throws as integrate_rotations
 Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                           const Eigen::MatrixX3d& Q, double lambda2,
                                           const IntegrateOptions& options,
-                                          IntegrateTimes* times = nullptr,
                                           const std::vector<double>& edge_factors = {});
 
 }  // namespace unfold

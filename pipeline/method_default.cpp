@@ -1,0 +1,43 @@
+// The default method (configs/default.yaml; tetrahedralize.shape unfolded, or
+// auto with a route other than conforming): the energy on the surface at low
+// beta, solved to convergence and again with its joints softened; that shape
+// tetrahedralized, its interior put back into the input; the cascade's
+// rotation field integrated on those tets (docs/method.md).
+#include "core/fork_safety.h"
+#include "pipeline/unfold_method.h"
+#include "pipeline/unfold_steps.h"
+
+namespace unfold {
+
+Method default_method(const Options& options) {
+  const CascadeDomain surface = CascadeDomain::surface;
+  const bool integrate = integrates(options);
+  StageList stages = {
+      check_and_simplify(),
+      // An open surface has no shape to tetrahedralize: its edge graph, or the fallback.
+      tetrahedralize_the_input().when(surface_open),
+  };
+  // The anchor unit depends on the surface alone: beside the one-threaded
+  // solve of a small surface, else beside the Delaunay of the unfolded shape
+  // (in TetGen's process), out of the way of the solve's threads.
+  if (integrate)
+    stages.push_back(anchor_unit().when(small_surface).on_the_side(kForkAlongsideThreads));
+  append(&stages, {lambda2_and_beta(surface), cascade(surface)});
+  if (softens(options))
+    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
+  if (integrate)
+    stages.push_back(anchor_unit().unless(small_surface).on_the_side(kForkAlongsideThreads));
+  // Given tets: as the run that made them on its unfolded shape did, when
+  // they say where (--rest_tet_output's .vtu), else the interior placed.
+  append(&stages, {
+                      tets_of_unfolded().unless(keeps_input_tets),
+                      given_unfolded_shape().when(given_tets_made_unfolded),
+                      solve_edges(),
+                      interior_placement().when(keeps_input_tets).unless(given_tets_made_unfolded),
+                  });
+  if (integrate) append(&stages, {integration(), anchored()});
+  stages.push_back(measure());
+  return {"default", stages};
+}
+
+}  // namespace unfold

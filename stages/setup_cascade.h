@@ -1,0 +1,59 @@
+// Stage: what a cascade needs before its first step. The energy problem, the
+// linear solver decided (direct or iterative, for linear_solver.method auto),
+// lambda_2 of the problem's Laplacian and the starting beta from it. The
+// backend's own setup runs beside lambda_2 where the two would each use one
+// thread (the direct solver): solve_cascade collects it.
+#pragma once
+
+#include <Eigen/Core>
+#include <future>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mesh/edge_graph.h"
+#include "mesh/surface_mesh.h"
+#include "mesh/tet_mesh.h"
+#include "solvers/beta_schedule.h"
+#include "solvers/cascade.h"
+#include "solvers/make_backend.h"
+#include "solvers/smoothed_aggregation.h"
+#include "solvers/unfold_problem.h"
+
+namespace unfold {
+
+struct CascadeSetupOptions {
+  /// method (local_global, ceres, dpmu), the linear solver (method auto decided
+  /// by setup_cascade), ceres
+  BackendOptions backend;
+  EnergyOptions energy;
+  std::string beta_mode = "relative";  ///< beta.mode: relative (times n / lambda_2) or absolute
+  double beta_value = 1.5;
+  bool raise_beta_to_bound = true;  ///< a starting beta below the bound is raised above it
+};
+
+struct CascadeSetup {
+  std::unique_ptr<UnfoldProblem> problem;  ///< on the heap: the backend's setup reads it
+  /// options.backend, the linear solver decided (direct or iterative)
+  BackendOptions backend_options;
+  std::shared_ptr<AmgData> amg;  ///< iterative: the AMG hierarchy, for lambda_2 and the backend
+  int amg_levels = 0;            ///< iterative: its levels
+  double seconds_amg = 0;        ///< iterative: its build (on another thread when speculative)
+  double lambda2 = 0;            ///< of L x = lambda M x, the problem's Laplacian and masses
+  BetaStart beta;
+  /// direct: the backend being set up meanwhile; invalid: solve_cascade sets it up
+  std::future<std::unique_ptr<CascadeBackend>> backend;
+  std::vector<std::string> warnings;  ///< beta raised to the bound
+};
+
+/// Sets up the cascade of `options` on the vertices and edges of `mesh`.
+/// @param graph         the edge graph the energy lives on (mesh's tets', or the
+///                      surface's triangles' when mesh has no tets), connected
+/// @param surface       the surface of mesh: its areas are the masses when mesh has no tets
+/// @param arap_factors  factors of the ARAP weights per edge of graph; empty: none
+/// @throws NumericalError when lambda_2 cannot be found, UsageError for bad options
+CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const SurfaceMesh& surface,
+                           const CascadeSetupOptions& options,
+                           const std::vector<double>& arap_factors = {});
+
+}  // namespace unfold
