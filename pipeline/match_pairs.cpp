@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 
 #include "core/atomic_file.h"
@@ -97,18 +98,28 @@ constexpr double kReseatDegrees = 45;
 constexpr int kAnchoringPairs = 3;
 constexpr double kAgreeDegrees = 15;
 
+using PairKey = std::pair<std::string, std::string>;  // (source, target)
+
+// What the collection decides before the pairs are matched.
+struct CollectionPlacements {
+  /// per pair the rotation seed where the pair's own disagrees with the one
+  /// its cycles through the other shapes imply (a body placed turned round:
+  /// docs/results/correspondence.md); none elsewhere
+  std::map<PairKey, Eigen::Matrix3d> seeds;
+  /// the alignments measured, in the pairs' own direction: the matching's
+  /// start, so that no pair is aligned twice
+  std::map<PairKey, FormAlignments> aligned;
+};
+
 // match.synchronize: every pair's best-fitting rotation (align_canonical_forms)
-// synchronized over the collection (solvers/synchronize_rotations.h); per
-// pair (source, target) the rotation seed where the pair's own disagrees with
-// the one its cycles through the other shapes imply (a body placed turned
-// round: docs/results/correspondence.md), else none.
-std::map<std::pair<std::string, std::string>, Eigen::Matrix3d> collection_rotation_seeds(
-    ShapeCache& cache, const std::vector<std::pair<std::string, std::string>>& pairs,
-    const MatchOptions& options, bool progress) {
+// synchronized over the collection (solvers/synchronize_rotations.h).
+CollectionPlacements collection_placements(ShapeCache& cache, const std::vector<PairKey>& pairs,
+                                           const MatchOptions& options, bool progress) {
+  CollectionPlacements out;
   std::map<std::string, int> member;
   std::vector<const MatchShape*> shapes;
   std::vector<RelativeRotation> measured;
-  std::map<std::pair<int, int>, int> measurement;  // (from, to) -> index
+  std::set<std::pair<int, int>> measurement;  // (from, to), each pair once
   for (const auto& [source, target] : pairs) {
     const CachedShape& a = cache.get(source);
     const CachedShape& b = cache.get(target);
@@ -119,14 +130,14 @@ std::map<std::pair<std::string, std::string>, Eigen::Matrix3d> collection_rotati
     }
     const int from = member[source], to = member[target];
     if (measurement.count({from, to}) || measurement.count({to, from})) continue;
-    const FormAlignments aligned =
+    measurement.insert({from, to});
+    FormAlignments aligned =
         align_canonical_forms(shapes[from]->canonical, shapes[from]->F, shapes[to]->canonical,
                               shapes[to]->F, options.alignment);
-    measurement[{from, to}] = int(measured.size());
     measured.push_back({from, to, aligned.candidates.front().linear});  // the best rotation
+    out.aligned[{source, target}] = std::move(aligned);
   }
-  std::map<std::pair<std::string, std::string>, Eigen::Matrix3d> seeds;
-  if (measured.size() < 3) return seeds;
+  if (measured.size() < 3) return out;
   const SynchronizedRotations sync = synchronize_rotations(int(shapes.size()), measured);
   std::vector<int> agreeing(shapes.size(), 0);
   for (size_t e = 0; e < measured.size(); ++e)
@@ -141,15 +152,15 @@ std::map<std::pair<std::string, std::string>, Eigen::Matrix3d> collection_rotati
     if (sync.disagreement_degrees[e] < kReseatDegrees || agreeing[m.from] < kAnchoringPairs ||
         agreeing[m.to] < kAnchoringPairs)
       continue;
-    seeds[{names[m.from], names[m.to]}] = sync.implied[e];
-    seeds[{names[m.to], names[m.from]}] = sync.implied[e].transpose();
+    out.seeds[{names[m.from], names[m.to]}] = sync.implied[e];
+    out.seeds[{names[m.to], names[m.from]}] = sync.implied[e].transpose();
     if (progress)
       std::fprintf(stderr,
                    "unfold_match: %s, %s: the pair's best rotation is %.0f degrees from the one "
                    "the other pairs imply; placed from theirs\n",
                    names[m.from].c_str(), names[m.to].c_str(), sync.disagreement_degrees[e]);
   }
-  return seeds;
+  return out;
 }
 
 std::string sym_vts_path(const std::string& mesh_path) {
@@ -248,10 +259,11 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
   ShapeCache cache(batch_options, options);
   MatchBatch batch;
   const auto sync_start = std::chrono::steady_clock::now();
-  const auto seeds =
+  CollectionPlacements placements =
       options.match.synchronize
-          ? collection_rotation_seeds(cache, pairs, options.match, batch_options.progress)
-          : std::map<std::pair<std::string, std::string>, Eigen::Matrix3d>{};
+          ? collection_placements(cache, pairs, options.match, batch_options.progress)
+          : CollectionPlacements{};
+  const auto& seeds = placements.seeds;
   batch.seconds_synchronize = seconds_since(sync_start) - cache.seconds();
   int done = 0;
   for (const auto& [source, target] : pairs) {
@@ -266,8 +278,14 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
       if (!b.shape) throw InputError(b.error);
       const auto start = std::chrono::steady_clock::now();
       const auto seed = seeds.find({source, target});
+      FormAlignments aligned;  // freed as the pairs go
+      if (const auto found = placements.aligned.find({source, target});
+          found != placements.aligned.end()) {
+        aligned = std::move(found->second);
+        placements.aligned.erase(found);
+      }
       p.match = match_shapes(*a.shape, *b.shape, options.match,
-                             seed == seeds.end() ? nullptr : &seed->second);
+                             seed == seeds.end() ? nullptr : &seed->second, std::move(aligned));
       p.seconds = seconds_since(start);
       batch.seconds_pairs += p.seconds;
       write_map(p.map_path, p.match.map);

@@ -146,15 +146,14 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
   const Eigen::MatrixX3d S_mirrored = S * X;
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.residual < b.residual; });
-  // A placement refined on every vertex from a coarse one (or the seed).
-  const auto refine = [&](const Candidate& c, bool seeded) {
+  // A placement refined on every vertex from a coarse one.
+  const auto refine = [&](const Candidate& c) {
     const IcpResult r = icp(c.mirrored ? S_mirrored : S, T, tree, c.R, c.t, options.iterations);
     FormAlignment out;
     out.linear = c.mirrored ? Eigen::Matrix3d(r.R * X) : r.R;
     out.translation = r.t;
     out.residual = r.residual;
     out.mirrored = c.mirrored;
-    out.seeded = seeded;
     out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
     result.candidates.push_back(std::move(out));
   };
@@ -168,10 +167,27 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
         distinct = distinct && ((k->R - c.R).norm() > 0.2 || (k->t - c.t).norm() > 0.05);
       if (distinct) kept.push_back(&c);
     }
-    for (const Candidate* c : kept) refine(*c, false);
+    for (const Candidate* c : kept) refine(*c);
   }
-  if (rotation_seed) refine({*rotation_seed, Eigen::Vector3d::Zero(), 0, false}, true);
+  if (rotation_seed) add_seeded_alignment(*rotation_seed, options, &result);
   return result;
+}
+
+void add_seeded_alignment(const Eigen::Matrix3d& rotation_seed, const FormAlignmentOptions& options,
+                          FormAlignments* aligned) {
+  if (options.iterations < 1) throw UsageError("add_seeded_alignment: iterations must be >= 1");
+  if (aligned->source.rows() == 0 || aligned->target.rows() == 0)
+    throw UsageError("add_seeded_alignment: the alignments hold no forms");
+  const Eigen::MatrixX3d& S = aligned->source;
+  const IcpResult r = icp(S, aligned->target, PointTree(aligned->target), rotation_seed,
+                          Eigen::Vector3d::Zero(), options.iterations);
+  FormAlignment out;
+  out.linear = r.R;
+  out.translation = r.t;
+  out.residual = r.residual;
+  out.seeded = true;
+  out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
+  aligned->candidates.push_back(std::move(out));
 }
 
 }  // namespace unfold

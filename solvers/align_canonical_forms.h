@@ -68,4 +68,12 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
                                      const FormAlignmentOptions& options = {},
                                      const Eigen::Matrix3d* rotation_seed = nullptr);
 
+/// Adds to `aligned` (of align_canonical_forms, whose forms it uses) the
+/// placement refined by ICP on every vertex from `rotation_seed`, `seeded`:
+/// what align_canonical_forms' rotation_seed adds, for alignments made before
+/// the seed was known (a collection's synchronization).
+/// @throws UsageError for options out of range or `aligned` without forms
+void add_seeded_alignment(const Eigen::Matrix3d& rotation_seed, const FormAlignmentOptions& options,
+                          FormAlignments* aligned);
+
 }  // namespace unfold

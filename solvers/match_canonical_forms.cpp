@@ -43,12 +43,18 @@ MatchShape prepare_match_shape(const Eigen::MatrixX3d& V, const Eigen::MatrixX3d
 }
 
 ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
-                        const MatchOptions& options, const Eigen::Matrix3d* rotation_seed) {
+                        const MatchOptions& options, const Eigen::Matrix3d* rotation_seed,
+                        FormAlignments aligned) {
   validate_match_options(options);
   ShapeMatch result;
   auto start = std::chrono::steady_clock::now();
-  const FormAlignments a = align_canonical_forms(source.canonical, source.F, target.canonical,
-                                                 target.F, options.alignment, rotation_seed);
+  if (aligned.candidates.empty()) {
+    aligned = align_canonical_forms(source.canonical, source.F, target.canonical, target.F,
+                                    options.alignment, rotation_seed);
+  } else if (rotation_seed) {
+    add_seeded_alignment(*rotation_seed, options.alignment, &aligned);
+  }
+  const FormAlignments& a = aligned;
   const PointTree tree(a.target);
   const FormAlignment* best_fit = nullptr;
   // rotation, mirrored: the best fits; the seeded rotation instead when there is one

@@ -79,8 +79,10 @@ struct ShapeMatch {
 /// @param rotation_seed if given, the rotation placement is the one refined
 ///        from this rotation of the unit-area forms (align_canonical_forms),
 ///        whatever the pair's own best-fitting rotation
+/// @param aligned if given, align_canonical_forms(source, target) made
+///        already (without a seed; a collection's synchronization did): not again
 ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
-                        const MatchOptions& options,
-                        const Eigen::Matrix3d* rotation_seed = nullptr);
+                        const MatchOptions& options, const Eigen::Matrix3d* rotation_seed = nullptr,
+                        FormAlignments aligned = {});
 
 }  // namespace unfold
