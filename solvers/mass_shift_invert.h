@@ -46,13 +46,9 @@ class MassShiftInvert {
   void perform_op(const double* x_in, double* y_out) const {
     Eigen::Map<const Eigen::VectorXd> x(x_in, rows());
     Eigen::Map<Eigen::VectorXd> y(y_out, rows());
-    if (masses_.size() == 0) {
-      if (!deflate_) {
-        y = solver_.solve(x);
-        return;
-      }
-      y = solver_.solve((x.array() - x.mean()).matrix());
-      y.array() -= y.mean();
+    if (masses_.size() == 0) {  // u is the constant vector: projecting is taking the mean
+      y = solver_.solve(deflate_ ? Eigen::VectorXd(x.array() - x.mean()) : Eigen::VectorXd(x));
+      if (deflate_) y.array() -= y.mean();
       return;
     }
     const Eigen::VectorXd projected = deflate_ ? Eigen::VectorXd(x - u_ * u_.dot(x)) : x;
