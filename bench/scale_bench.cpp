@@ -26,6 +26,9 @@
 // inside seconds_unfold). --analyze_only stops after the direct solver's
 // symbolic analysis and prints
 //   tet_vertices tets seconds_tet seconds_analyze factor_nonzeros factor_gflops peak_rss_mb
+// --stages prints, instead of the row, one tab-separated line per stage of the
+// method's list (pipeline/run_stages.h) in order: name, seconds; then "whole
+// run" (read, unfold_surface, write) and its seconds.
 // --plot draws the scaling plot from bench/run's CSV (columns as the row above).
 #include <glog/logging.h>
 #include <sys/resource.h>
@@ -106,7 +109,7 @@ int run(int argc, char** argv) {
   std::string input, plot_csv, output, linear_solver = "auto", metrics, config;
   int resolution = 0;
   double divisions = 0;
-  bool analyze_only = false;
+  bool analyze_only = false, stages = false;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
     const size_t eq = arg.find('=');
@@ -120,6 +123,8 @@ int run(int argc, char** argv) {
       divisions = std::stod(value);
     else if (key == "--analyze_only")
       analyze_only = true;
+    else if (key == "--stages")
+      stages = true;
     else if (key == "--linear_solver")
       linear_solver = value;
     else if (key == "--metrics")
@@ -170,6 +175,12 @@ int run(int argc, char** argv) {
   write_metrics_json(dir + "/metrics.json", r, options);
   const double seconds_write = seconds_since(write_start);
   std::filesystem::remove_all(dir);
+  if (stages) {
+    for (const StageTime& stage : r.stage_seconds)
+      std::printf("%s\t%.3f\n", stage.name.c_str(), stage.seconds);
+    std::printf("whole run\t%.3f\n", seconds_read + total + seconds_write);
+    return 0;
+  }
   std::printf(
       "%d\t%d\t%.3f\t%.3f\t%.3f\t%.3f\t%d\t%s\t%d\t%.0f\t%.0f\t%.4f\t%.4f\t%.3f\t%.3f\t%.3f\t%."
       "3f\t%d\t%."

@@ -1,4 +1,4 @@
-// The project's only CGAL translation unit (the headers are heavy: keep them here).
+// One of the project's two CGAL translation units (the headers are heavy: keep them here).
 #include "mesh/curve_skeleton.h"
 
 // CGAL's containers (the skeletonization's halfedge structure) take their

@@ -18,8 +18,8 @@ Method default_method(const Options& options) {
       tetrahedralize_the_input().when(surface_open),
   };
   // The anchor unit depends on the surface alone: beside the one-threaded
-  // solve of a small surface, else beside the Delaunay of the unfolded shape
-  // (in TetGen's process), out of the way of the solve's threads.
+  // solve of a small surface, else beside the (one-threaded) Delaunay of the
+  // unfolded shape, out of the way of the solve's threads.
   if (integrate)
     stages.push_back(anchor_unit().when(small_surface).on_the_side(kForkAlongsideThreads));
   append(&stages, {lambda2_and_beta(surface), cascade(surface)});

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -15,6 +16,7 @@
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
 #include "test_meshes.h"
+#include "tetra/delaunay_tets.h"
 #include "tetra/fast_winding_number.h"
 #include "tetra/run_tetgen.h"
 #include "tetra/tetrahedralize.h"
@@ -147,47 +149,58 @@ TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
   EXPECT_LT(volume, 4.0 / 3.0 * M_PI * 8.0);
 }
 
-// The edges of TetGen's Delaunay tetrahedralization of an N^3 lattice (x, then
-// y, then z in input order) sheared by `shear` as the robust route shears its
-// grid, leaving out edges between two points on the lattice's boundary: the
-// hull's coplanar points are split arbitrarily, which the robust route never
-// sees (its hull is the surface).
-std::set<std::pair<int, int>> sheared_lattice_edges(int N, double shear) {
-  tetgenio in;
-  in.firstnumber = 0;
-  in.numberofpoints = N * N * N;
-  in.pointlist = new REAL[size_t(in.numberofpoints) * 3];
+// An N^3 lattice (x, then y, then z in input order) sheared by `shear` as the
+// robust route shears its grid.
+Eigen::MatrixX3d sheared_lattice(int N, double shear) {
+  Eigen::MatrixX3d points(N * N * N, 3);
+  for (int i = 0; i < N * N * N; ++i) {
+    const double x = i / (N * N), y = i / N % N, z = i % N;
+    points.row(i) << x + shear * (y + z), y + shear * (x + z), z + shear * (x + y);
+  }
+  return points;
+}
+
+// The edges of the tets T of an N^3 lattice, leaving out edges between two
+// points on the lattice's boundary: the hull's coplanar points are split
+// arbitrarily, which the robust route never sees (its hull is the surface).
+std::set<std::pair<int, int>> lattice_edges(int N, const Eigen::MatrixX4i& T) {
   const auto on_boundary = [N](int i) {
     const int c[3] = {i / (N * N), i / N % N, i % N};
     return std::any_of(c, c + 3, [N](int x) { return x == 0 || x == N - 1; });
   };
-  for (int i = 0; i < in.numberofpoints; ++i) {
-    const double x = i / (N * N), y = i / N % N, z = i % N;
-    in.pointlist[3 * i] = x + shear * (y + z);
-    in.pointlist[3 * i + 1] = y + shear * (x + z);
-    in.pointlist[3 * i + 2] = z + shear * (x + y);
-  }
-  const TetgenOutput out = run_tetgen("zQ", in, "lattice test");
   std::set<std::pair<int, int>> edges;
-  for (Eigen::Index t = 0; t < out.tets.rows(); ++t)
+  for (Eigen::Index t = 0; t < T.rows(); ++t)
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b) {
-        const int i = std::min(out.tets(t, a), out.tets(t, b));
-        const int j = std::max(out.tets(t, a), out.tets(t, b));
+        const int i = std::min(T(t, a), T(t, b)), j = std::max(T(t, a), T(t, b));
         if (!on_boundary(i) || !on_boundary(j)) edges.emplace(i, j);
       }
   return edges;
 }
 
-// The robust route shears its interior grid so that TetGen needs no exact
-// arithmetic on cospherical cell corners; the shear must split every cell as
-// TetGen's symbolic perturbation splits the unsheared lattice, or the tet mesh
-// (and E_rig, E_str) would change with it.
+// TetGen's Delaunay of the unsheared lattice: every cell split by its symbolic perturbation.
+std::set<std::pair<int, int>> tetgen_lattice_edges(int N) {
+  const Eigen::MatrixX3d points = sheared_lattice(N, 0.0);
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = int(points.rows());
+  in.pointlist = new REAL[size_t(in.numberofpoints) * 3];
+  for (int i = 0; i < in.numberofpoints; ++i)
+    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = points(i, k);
+  return lattice_edges(N, run_tetgen("zQ", in, "lattice test").tets);
+}
+
+// The robust route shears its interior grid so that the Delaunay needs no
+// exact arithmetic on cospherical cell corners, and so that its tets do not
+// depend on how a library breaks such ties: the sheared grid's Delaunay
+// (CGAL's) must split every cell as TetGen's symbolic perturbation split the
+// unsheared lattice when TetGen made the robust route's Delaunay, or the tet
+// mesh (and E_rig, E_str) would change with it.
 TEST(RobustTetrahedralize, InteriorGridShearSplitsCellsAsTetGensPerturbation) {
   const int N = 6;
-  const std::set<std::pair<int, int>> perturbed = sheared_lattice_edges(N, 0.0);
-  const std::set<std::pair<int, int>> sheared = sheared_lattice_edges(N, kInteriorGridShear);
-  EXPECT_EQ(sheared, perturbed);
+  const std::set<std::pair<int, int>> perturbed = tetgen_lattice_edges(N);
+  const Eigen::MatrixX3d sheared = sheared_lattice(N, kInteriorGridShear);
+  EXPECT_EQ(lattice_edges(N, delaunay_tets(sheared)), perturbed);
   // 6 tets per cell around the (1, 1, 1) diagonal: one diagonal per cell and
   // one per face, besides the lattice edges.
   const int diagonal = N * N + N + 1;  // index step from corner (0, 0, 0) to (1, 1, 1)
@@ -198,7 +211,42 @@ TEST(RobustTetrahedralize, InteriorGridShearSplitsCellsAsTetGensPerturbation) {
         EXPECT_TRUE(perturbed.count({i, i + diagonal})) << x << " " << y << " " << z;
       }
   // The sign matters: the opposite shear splits cells along another diagonal.
-  EXPECT_NE(sheared_lattice_edges(N, -kInteriorGridShear), perturbed);
+  EXPECT_NE(lattice_edges(N, delaunay_tets(sheared_lattice(N, -kInteriorGridShear))), perturbed);
+}
+
+// The Delaunay's tets are positively oriented, hold every point, and fill the
+// convex hull: a jittered lattice's tets sum to its box's volume. Points that
+// coincide or lie in a plane are refused.
+TEST(DelaunayTets, FillsTheHullWithPositiveTetsAndRefusesDegeneratePoints) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  const int N = 5;
+  Eigen::MatrixX3d points = sheared_lattice(N, 0.0);
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (points(i, k) > 0 && points(i, k) < N - 1) points(i, k) += jitter(random);
+  const Eigen::MatrixX4i T = delaunay_tets(points);
+  std::vector<char> used(size_t(points.rows()), 0);
+  double volume = 0;
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    const Eigen::Vector3d a = points.row(T(t, 0)), b = points.row(T(t, 1)), c = points.row(T(t, 2)),
+                          d = points.row(T(t, 3));
+    const double v = (b - a).cross(c - a).dot(d - a) / 6;
+    EXPECT_GT(v, 0) << "tet " << t;
+    volume += v;
+    for (int k = 0; k < 4; ++k) used[size_t(T(t, k))] = 1;
+  }
+  EXPECT_NEAR(volume, std::pow(N - 1, 3), 1e-9);
+  EXPECT_EQ(std::count(used.begin(), used.end(), 1), points.rows());
+
+  Eigen::MatrixX3d twice = points;
+  twice.row(3) = twice.row(17);
+  EXPECT_THROW(delaunay_tets(twice), NumericalError);
+  Eigen::MatrixX3d flat = points;
+  flat.col(2).setZero();  // a plane (coinciding points too: the plane is found first)
+  EXPECT_THROW(delaunay_tets(flat), NumericalError);
+  points(4, 1) = std::nan("");
+  EXPECT_THROW(delaunay_tets(points), NumericalError);
 }
 
 // TetGen's conforming mode refuses these surfaces (the conforming route

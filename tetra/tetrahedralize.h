@@ -89,7 +89,7 @@ struct RobustStart {
 /// @throws InputError for fewer than 4 vertices or no faces
 RobustStart robust_start(const SurfaceMesh& surface);
 
-/// Delaunay tetrahedralization (TetGen point mode) of the surface vertices and
+/// Delaunay tetrahedralization (delaunay_tets, CGAL) of the surface vertices and
 /// interior grid points (spacing three times the mean edge length), keeping the tets
 /// inside by the generalized winding number: at the centroid, and at the
 /// midpoint of every edge joining two surface vertices that is not a surface
@@ -98,20 +98,21 @@ RobustStart robust_start(const SurfaceMesh& surface);
 /// faces are used as given, equal positions included.
 /// @param start robust_start(surface)
 /// @param report if not null, receives num_removed_tets and num_rescued_tets
-/// @throws NumericalError if TetGen fails or a surface vertex is in no usable
+/// @throws NumericalError if the Delaunay fails or a surface vertex is in no usable
 ///         tetrahedron (robust_start throws InputError for fewer than 4
 ///         vertices or no faces)
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& start,
                               TetReport* report = nullptr);
 
 /// The robust route's interior grid is a cubic lattice sheared by this much:
-/// lattice point (x, y, z) (in cells, in TetGen's input order x, then y, then
-/// z) moves by kInteriorGridShear * (y + z, x + z, x + y) cells. A cubic cell's
-/// 8 corners are cospherical, which TetGen resolves by exact arithmetic and
-/// symbolic perturbation (a third of its Delaunay time on the TOSCA/FAUST
-/// meshes); a sheared cell has one Delaunay split, and with this sign it is
-/// the one the perturbation picks for whole cells: 6 tets around the (1, 1, 1)
-/// diagonal (docs/tetrahedralization.md).
+/// lattice point (x, y, z) (in cells, in input order x, then y, then z) moves
+/// by kInteriorGridShear * (y + z, x + z, x + y) cells. A cubic cell's 8
+/// corners are cospherical, which a Delaunay resolves by exact arithmetic and
+/// symbolic perturbation (a third of TetGen's Delaunay time on the TOSCA/FAUST
+/// meshes), each library its own way; a sheared cell has one Delaunay split,
+/// and with this sign it is the one TetGen's perturbation picked for whole
+/// cells (the robust route's Delaunay until it moved to CGAL): 6 tets around
+/// the (1, 1, 1) diagonal (docs/tetrahedralization.md).
 inline constexpr double kInteriorGridShear = -5e-7;
 
 }  // namespace unfold

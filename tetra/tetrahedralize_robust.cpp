@@ -15,8 +15,8 @@
 #include "core/union_find.h"
 #include "mesh/edge_graph.h"
 #include "mesh/position_order.h"
+#include "tetra/delaunay_tets.h"
 #include "tetra/fast_winding_number.h"
-#include "tetra/run_tetgen.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -36,9 +36,10 @@ double mean_edge_length(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
   return F.rows() > 0 ? sum / double(3 * F.rows()) : 0;
 }
 
-// TetGen merges points at equal positions, which would drop a surface vertex
-// from the output. Later copies of a position are moved by a tiny deterministic
-// offset for TetGen only; tets joining two copies are dropped afterwards.
+// A Delaunay tetrahedralization merges points at equal positions, which would
+// drop a surface vertex from the output. Later copies of a position are moved
+// by a tiny deterministic offset for it only; tets joining two copies are
+// dropped afterwards.
 Eigen::MatrixX3d separate_duplicates(const Eigen::MatrixX3d& V, double offset) {
   const std::vector<int> order = position_order(V);
   Eigen::MatrixX3d P = V;
@@ -84,7 +85,7 @@ Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindi
       vertex_of[size_t(next[size_t(vertex_key[size_t(i)])]++)] = i;
   }
   // Each x slab on its own (in parallel), joined in x order: the order of the
-  // points, which TetGen's tie-breaking sees, is the serial loop's.
+  // points is the serial loop's.
   std::vector<std::vector<Eigen::RowVector3d>> slab_points(size_t(cells(0))),
       slab_shifts(size_t(cells(0)));
 #pragma omp parallel for schedule(dynamic, 1)
@@ -166,19 +167,10 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
   const Eigen::MatrixX3d& interior = start.interior;
   const Eigen::MatrixX3d P = separate_duplicates(surface.V, 1e-4 * start.mean_edge_length);
   const double seconds_points = start.seconds + lap(&clock);
-  tetgenio in;
-  in.firstnumber = 0;
-  in.numberofpoints = int(n + interior.rows());
-  in.pointlist = new REAL[size_t(in.numberofpoints) * 3];
-  for (int i = 0; i < in.numberofpoints; ++i)
-    for (int k = 0; k < 3; ++k) in.pointlist[3 * i + k] = i < n ? P(i, k) : interior(i - n, k);
-  // z: 0-based, Q: quiet; no p: a Delaunay tetrahedralization of the points.
-  TetgenOutput out = run_tetgen("zQ", in, "tetrahedralization (robust route)");
-  if (out.points.rows() != in.numberofpoints || out.tets.rows() == 0)
-    throw NumericalError("TetGen (robust route) merged or dropped input points");
-  Eigen::MatrixX3d V = std::move(out.points);
-  V.topRows(n) = surface.V;  // undo the duplicate separation
-  const Eigen::MatrixX4i& T = out.tets;
+  Eigen::MatrixX3d V(n + interior.rows(), 3);
+  V << P, interior;
+  const Eigen::MatrixX4i T = delaunay_tets(V);  // P's duplicates are apart: every point in a tet
+  V.topRows(n) = surface.V;                     // undo the duplicate separation
   const int num_delaunay = int(T.rows());
   const double seconds_delaunay = lap(&clock);
 
@@ -362,10 +354,10 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
     for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(tet(k))];
     ++row;
   }
-  VLOG(1) << "robust route: interior points " << seconds_points << " s, Delaunay ("
-          << in.numberofpoints << " points, " << num_delaunay << " tets) " << seconds_delaunay
-          << " s, carve (" << midpoints.rows() << " edge midpoints) " << seconds_carve
-          << " s, rescue and output " << lap(&clock) << " s";
+  VLOG(1) << "robust route: interior points " << seconds_points << " s, Delaunay (" << V.rows()
+          << " points, " << num_delaunay << " tets) " << seconds_delaunay << " s, carve ("
+          << midpoints.rows() << " edge midpoints) " << seconds_carve << " s, rescue and output "
+          << lap(&clock) << " s";
   if (report) {
     report->num_removed_tets = num_delaunay - num_kept;
     report->num_rescued_tets = rescued;
