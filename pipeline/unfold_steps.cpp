@@ -99,6 +99,14 @@ void take_setup(UnfoldState& s, CascadeSetup setup) {
   s.setup = std::move(setup);
 }
 
+// The input's tets made, in place of the surface alone; their warnings go to `warnings`.
+void take_input_tets(UnfoldState& s, InputTets t, std::vector<std::string>* warnings) {
+  s.mesh.tets = std::move(t.tets);
+  s.mesh.tet_report = t.report;
+  s.mesh.tets_deferred = false;
+  append(warnings, t.warnings);
+}
+
 void take_solve(UnfoldResult& r, CascadeSolve solve) {
   r.cascade = std::move(solve.cascade);
   r.linear_solver = solve.linear_solver;
@@ -168,25 +176,21 @@ Stage tetrahedralize_the_input() {
   return step(
       "tetrahedralize the input",
       [](UnfoldState& s) {
-        PreparedMesh& p = s.mesh;
-        InputTets t = tetrahedralize_input(p.surface, s.open, s.options.tet,
-                                           s.options.fallback_surface_graph, s.known_intersections);
-        p.tets = std::move(t.tets);
-        p.tet_report = t.report;
-        p.tets_deferred = false;
-        append(&p.warnings, t.warnings);
+        take_input_tets(
+            s,
+            tetrahedralize_input(s.mesh.surface, s.open, s.options.tet,
+                                 s.options.fallback_surface_graph, s.known_intersections),
+            &s.mesh.warnings);
       },
       StagePart::prepare);
 }
 
 Stage tetrahedralize_deferred() {
   return step("tetrahedralize the input (deferred)", [](UnfoldState& s) {
-    InputTets t = tetrahedralize_input(s.mesh.surface, false, s.options.tet,
-                                       s.options.fallback_surface_graph);
-    s.mesh.tets = std::move(t.tets);
-    s.mesh.tet_report = t.report;
-    s.mesh.tets_deferred = false;
-    append(&s.result.warnings, t.warnings);
+    take_input_tets(s,
+                    tetrahedralize_input(s.mesh.surface, false, s.options.tet,
+                                         s.options.fallback_surface_graph),
+                    &s.result.warnings);
   });
 }
 
