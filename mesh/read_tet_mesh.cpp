@@ -117,12 +117,27 @@ std::string_view data_array(std::string_view scope, const std::string& attribute
   fail_reading(path, "no DataArray " + attribute);
 }
 
+// The first <name> element of text, its opening tag (which may carry
+// attributes) to its closing tag; empty if there is none.
+std::string_view find_element(std::string_view text, const std::string& name) {
+  const std::string open = "<" + name;
+  for (size_t start = text.find(open); start != std::string_view::npos;
+       start = text.find(open, start + 1)) {
+    const size_t after = start + open.size();
+    // <Points> or <Points ...>, not <PointsOther>
+    if (after < text.size() && text[after] != '>' &&
+        !std::isspace(static_cast<unsigned char>(text[after])))
+      continue;
+    const size_t end = text.find("</" + name + ">", after);
+    return end == std::string_view::npos ? std::string_view() : text.substr(start, end - start);
+  }
+  return {};
+}
+
 std::string_view element(std::string_view text, const std::string& name, const std::string& path) {
-  const size_t start = text.find("<" + name + ">");
-  const size_t end = text.find("</" + name + ">");
-  if (start == std::string_view::npos || end == std::string_view::npos || end < start)
-    fail_reading(path, "no <" + name + "> element");
-  return text.substr(start, end - start);
+  const std::string_view found = find_element(text, name);
+  if (found.empty()) fail_reading(path, "no <" + name + "> element");
+  return found;
 }
 
 TetMeshData read_vtu(const std::string& path) {
@@ -155,13 +170,7 @@ TetMeshData read_vtu(const std::string& path) {
   if (connectivity.size() != 4 * types.size())
     fail_reading(path, "the connectivity does not match the cells");
   TetMeshData mesh = assemble(xyz, connectivity, 0, path);
-  // <PointData ...> carries attributes: element() wants a bare tag.
-  const size_t point_data = text.find("<PointData");
-  const std::string_view point_arrays =
-      point_data == std::string::npos
-          ? std::string_view()
-          : std::string_view(text).substr(point_data,
-                                          text.find("</PointData>", point_data) - point_data);
+  const std::string_view point_arrays = find_element(text, "PointData");
   if (point_arrays.find("Name=\"unfolded\"") != std::string_view::npos) {
     const std::vector<double> unfolded =
         numbers(data_array(point_arrays, "Name=\"unfolded\"", path), 0.0);
