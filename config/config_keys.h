@@ -10,6 +10,10 @@
     "local_global (the paper's), ceres (L-BFGS); baselines dpmu, lsmds, scf (docs/baselines.md)")  \
   X(target_vertices, "simplify.target_vertices", target_vertices,                                  \
     "simplify the surface to about this many vertices first; 0 keeps all")                         \
+  X(surface_solve_hops, "simplify.surface_solve_hops", surface_solve_hops,                         \
+    "domain surface: solve the surface stages on clusters of the surface's vertices this many "    \
+    "edges across (1: about a quarter of the vertices, 2: a tenth) and carry the solution to the " \
+    "whole surface; 0 solves on the whole surface")                                                \
   X(tet_route, "tetrahedralize.route", tet.route,                                                  \
     "tetrahedralization route: auto (conforming unless the surface intersects itself, else "       \
     "robust), conforming, robust")                                                                 \

@@ -251,6 +251,8 @@ void validate_options(const Options& o) {
           "method", "must be local_global, ceres, dpmu, lsmds or scf, got '" + o.method + "'");
   require(o.target_vertices == 0 || o.target_vertices >= 4, "simplify.target_vertices",
           "must be 0 (keep all) or at least 4");
+  require(o.surface_solve_hops >= 0, "simplify.surface_solve_hops",
+          "must be 0 (the whole surface) or a positive number of edges");
   require(o.tet.route == "auto" || o.tet.route == "conforming" || o.tet.route == "robust",
           "tetrahedralize.route", "must be auto, conforming or robust, got '" + o.tet.route + "'");
   require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),
@@ -335,6 +337,10 @@ void validate_options(const Options& o) {
           "uniform)");
   require(std::isfinite(e.user_pairs_gamma) && e.user_pairs_gamma > 0, "user_pairs.gamma",
           "must be a positive finite number");
+  // The pairs name surface vertices, which a coarse surface solve does not have.
+  require(o.surface_solve_hops == 0 || e.user_pairs_file.empty(), "simplify.surface_solve_hops",
+          "must be 0 with user_pairs.file (the pairs name "
+          "vertices of the whole surface)");
   require(std::isfinite(e.volume_weight) && e.volume_weight >= 0, "volume.weight",
           "must be a finite number >= 0");
   require(o.domain != "surface" || e.volume_weight == 0, "volume.weight",

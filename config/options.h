@@ -34,6 +34,7 @@ struct Options {
   explicit Options(PapersParameters) {}
   std::string method = "local_global";
   int target_vertices = 0;
+  int surface_solve_hops = 0;  ///< simplify.surface_solve_hops: the surface solved on clusters
   TetOptions tet;
   bool fallback_surface_graph = false;  ///< no tet mesh possible: unfold the surface edge graph
   std::string components = "refuse";    ///< several components: "refuse" or "separately"

@@ -21,4 +21,11 @@ Eigen::MatrixX3i triangulate_faces(const SurfaceMesh& mesh) {
   return F;
 }
 
+double mean_edge_length(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
+  double sum = 0;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    for (int k = 0; k < 3; ++k) sum += (V.row(F(t, k)) - V.row(F(t, (k + 1) % 3))).norm();
+  return F.rows() > 0 ? sum / double(3 * F.rows()) : 0;
+}
+
 }  // namespace unfold

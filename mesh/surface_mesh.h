@@ -19,4 +19,7 @@ SurfaceMesh surface_mesh_from_rows(const std::vector<double>& coords,
 /// Fan-triangulates every face (triangles stay as they are), in face order.
 Eigen::MatrixX3i triangulate_faces(const SurfaceMesh& mesh);
 
+/// The mean length of the triangles' edges (each counted once per triangle); 0 without triangles.
+double mean_edge_length(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F);
+
 }  // namespace unfold

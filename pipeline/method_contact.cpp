@@ -21,6 +21,7 @@ Method contact_method(const Options& options) {
   };
   if (softens(options))
     append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
+  stages.push_back(full_resolution().when(coarse_surface_solve));
   append(&stages,
          {
              // a preparation shared with a method that tetrahedralizes the unfolded shape

@@ -25,6 +25,7 @@ Method default_method(const Options& options) {
   append(&stages, {lambda2_and_beta(surface), cascade(surface)});
   if (softens(options))
     append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
+  stages.push_back(full_resolution().when(coarse_surface_solve));
   if (integrate)
     stages.push_back(anchor_unit().unless(small_surface).on_the_side(kForkAlongsideThreads));
   // Given tets: as the run that made them on its unfolded shape did, when

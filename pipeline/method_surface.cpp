@@ -19,6 +19,7 @@ Method surface_method(const Options& options) {
   };
   if (softens(options))
     append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
+  stages.push_back(full_resolution().when(coarse_surface_solve));
   stages.push_back(interior_placement());
   if (integrates(options)) append(&stages, {anchor_unit(), integration(), anchored()});
   stages.push_back(measure());

@@ -6,6 +6,7 @@
 #include <future>
 
 #include "config/options.h"
+#include "mesh/coarsen_surface.h"
 #include "metrics/geodesic_error.h"
 #include "pipeline/unfold_surface.h"
 #include "solvers/integrate_rotation_field.h"
@@ -33,6 +34,9 @@ struct UnfoldState {
   /// where the cascade solves: the surface (domain surface) or the tets and their edges
   TetMesh cascade_mesh;
   SolveEdges cascade_edges;
+  /// simplify.surface_solve_hops: the coarse graph the surface stages solve on
+  /// (cascade_mesh and cascade_edges are its), and its masses; else empty
+  SurfaceCoarsening coarsening;
   CascadeSetup setup;               ///< lambda_2 and beta, for the next cascade
   std::string first_solver;         ///< the first solve's linear solver (soft joints reuse it)
   Eigen::MatrixX3d first_solution;  ///< soft joints: the first solve's positions

@@ -17,6 +17,8 @@
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
 #include "solvers/contact_bridges.h"
+#include "solvers/prolong_surface_solve.h"
+#include "solvers/tetrahedralize_unfolded.h"
 #include "stages/anchor_lambda2.h"
 #include "stages/find_contact_faces.h"
 #include "stages/lsmds_cascade.h"
@@ -28,6 +30,9 @@
 
 namespace unfold {
 namespace {
+
+// simplify.surface_solve_hops: fewer clusters than this leave no shape to solve.
+constexpr int kFewestClusters = 8;
 
 Stage step(std::string name, std::function<void(UnfoldState&)> run,
            StagePart part = StagePart::unfold, StageTimer timer = StageTimer::none) {
@@ -226,12 +231,28 @@ Stage lambda2_and_beta(CascadeDomain domain) {
   return step(
       surface ? "surface: lambda_2 and beta" : "lambda_2 and beta",
       [domain, surface](UnfoldState& s) {
-        if (surface) {  // the energy on the surface's vertices and triangle edges
+        if (surface && s.options.surface_solve_hops > 0) {
+          s.coarsening = coarsen_surface(s.mesh.surface, s.options.surface_solve_hops);
+          if (s.coarsening.V.rows() < kFewestClusters) {
+            s.result.warnings.push_back(
+                "simplify.surface_solve_hops: " + std::to_string(s.options.surface_solve_hops) +
+                " edges leave " + std::to_string(s.coarsening.V.rows()) +
+                " clusters; the surface is solved whole");
+            LOG(WARNING) << s.result.warnings.back();
+            s.coarsening = SurfaceCoarsening{};
+          }
+        }
+        if (surface && coarse_surface_solve(s)) {  // on a coarse graph of the surface
+          s.cascade_mesh = TetMesh{s.coarsening.V, Eigen::MatrixX4i(), int(s.coarsening.V.rows())};
+          s.cascade_edges = SolveEdges{s.coarsening.graph, {}, {}};
+          LOG(INFO) << "surface solve on " << s.coarsening.V.rows() << " clusters of the "
+                    << s.mesh.surface.V.rows() << " surface vertices";
+        } else if (surface) {  // the energy on the surface's vertices and triangle edges
           s.cascade_mesh = surface_alone(s.mesh.surface);
           s.cascade_edges = solve_edge_graph(s.cascade_mesh, s.mesh.surface, 0.0);
         }
         take_setup(s, setup_cascade(domain_graph(s, domain), domain_mesh(s, domain), s.mesh.surface,
-                                    setup_options(s.options)));
+                                    setup_options(s.options), {}, s.coarsening.masses));
         s.first_solver = s.setup.backend_options.linear_solver.method;
       },
       StagePart::unfold, StageTimer::lambda2);
@@ -262,9 +283,10 @@ Stage soft_joints_lambda2(CascadeDomain domain) {
         s.first_iterations = s.result.cascade.iterations;
         const EdgeGraph& graph = domain_graph(s, domain);
         const TetMesh& mesh = domain_mesh(s, domain);
-        take_setup(s, setup_cascade(
-                          graph, mesh, s.mesh.surface, softened,
-                          soft_joint_factors(graph, mesh.V, s.first_solution, s.options.soften)));
+        take_setup(
+            s, setup_cascade(graph, mesh, s.mesh.surface, softened,
+                             soft_joint_factors(graph, mesh.V, s.first_solution, s.options.soften),
+                             s.coarsening.masses));
       },
       StagePart::unfold, StageTimer::lambda2);
 }
@@ -281,12 +303,27 @@ Stage soft_joints_cascade(CascadeDomain) {
       StagePart::unfold, StageTimer::cascade);
 }
 
+Stage full_resolution() {
+  return step(
+      "surface: to full resolution",
+      [](UnfoldState& s) {
+        const EdgeGraph graph =
+            build_edge_graph(int(s.mesh.surface.V.rows()), triangulate_faces(s.mesh.surface));
+        s.result.cascade.positions = prolong_surface_solve(graph, s.mesh.surface.V, s.coarsening,
+                                                           s.result.cascade.positions);
+      },
+      StagePart::unfold, StageTimer::cascade);
+}
+
 Stage tets_of_unfolded() {
   return step(
       "tets of the unfolded shape",
       [](UnfoldState& s) {
+        TetOptions tet = s.options.tet;
+        if (coarse_surface_solve(s))
+          tet.interior_spacing = input_interior_spacing(s.mesh.surface, s.result.cascade.positions);
         UnfoldedShapeTets u =
-            tets_of_unfolded_shape(s.mesh.surface, s.result.cascade.positions, s.options.tet,
+            tets_of_unfolded_shape(s.mesh.surface, s.result.cascade.positions, tet,
                                    integrates(s.options) && s.options.integrate.surface_edges > 0);
         TetReport& report = s.mesh.tet_report;
         const int contact_face_pairs = report.contact_face_pairs;
@@ -440,6 +477,8 @@ Stage measure() {
 }
 
 bool surface_open(const UnfoldState& state) { return state.open; }
+
+bool coarse_surface_solve(const UnfoldState& state) { return state.coarsening.V.rows() > 0; }
 
 bool contact_faces_found(const UnfoldState& state) {
   return state.mesh.tet_report.contact_face_pairs > 0;

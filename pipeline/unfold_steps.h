@@ -23,7 +23,8 @@ Stage lambda2_and_beta(CascadeDomain domain);     ///< setup_cascade on the doma
 Stage cascade(CascadeDomain domain);              ///< solve_cascade
 Stage soft_joints_lambda2(CascadeDomain domain);  ///< setup_cascade again, the joints softened
 Stage soft_joints_cascade(CascadeDomain domain);  ///< solve_cascade from the first solution
-Stage tets_of_unfolded();                         ///< the tets of the surface solve's shape
+Stage full_resolution();       ///< a coarse surface solve carried to every surface vertex
+Stage tets_of_unfolded();      ///< the tets of the surface solve's shape
 Stage given_unfolded_shape();  ///< given tets' unfolded positions in place of tets_of_unfolded
 Stage interior_placement();    ///< the input tets' interior by ARAP
 Stage lsmds_solve();           ///< method lsmds
@@ -35,6 +36,8 @@ Stage measure();               ///< the canonical pose placed, the metrics
 
 // Conditions and choices of the options.
 bool surface_open(const UnfoldState& state);
+/// the surface stages solve on clusters (simplify.surface_solve_hops)
+bool coarse_surface_solve(const UnfoldState& state);
 bool contact_faces_found(const UnfoldState& state);  ///< by find_contact
 bool has_tets(const UnfoldState& state);
 bool given_tets(const UnfoldState& state);     ///< prepare_mesh_from_tets: the user's, kept

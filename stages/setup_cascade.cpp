@@ -19,10 +19,11 @@ namespace {
 // is bounded for beta > n / lambda_2 - 1 with lambda_2 that of L x = lambda M x
 // (docs/method.md); uniform: none.
 Eigen::VectorXd stretch_masses(const TetMesh& mesh, const SurfaceMesh& surface,
-                               const EnergyOptions& options) {
+                               const EnergyOptions& options, const Eigen::VectorXd& given) {
   if (options.stretch_masses != "lumped") return {};
-  Eigen::VectorXd m = mesh.T.rows() > 0 ? lumped_masses(mesh.V, mesh.T)
-                                        : lumped_masses(mesh.V, triangulate_faces(surface));
+  Eigen::VectorXd m = given.size() > 0    ? given
+                      : mesh.T.rows() > 0 ? lumped_masses(mesh.V, mesh.T)
+                                          : lumped_masses(mesh.V, triangulate_faces(surface));
   return m * (double(m.size()) / m.sum());
 }
 
@@ -36,9 +37,10 @@ constexpr int kSpeculativeAmgVertices = 20000;
 
 CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const SurfaceMesh& surface,
                            const CascadeSetupOptions& options,
-                           const std::vector<double>& arap_factors) {
+                           const std::vector<double>& arap_factors,
+                           const Eigen::VectorXd& given_masses) {
   CascadeSetup setup;
-  const Eigen::VectorXd masses = stretch_masses(mesh, surface, options.energy);
+  const Eigen::VectorXd masses = stretch_masses(mesh, surface, options.energy, given_masses);
   setup.problem = std::make_unique<UnfoldProblem>(
       make_unfold_problem(mesh, graph, options.energy, masses, arap_factors));
   const int n = graph.num_vertices;

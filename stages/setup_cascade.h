@@ -51,9 +51,13 @@ struct CascadeSetup {
 ///                      surface's triangles' when mesh has no tets), connected
 /// @param surface       the surface of mesh: its areas are the masses when mesh has no tets
 /// @param arap_factors  factors of the ARAP weights per edge of graph; empty: none
+/// @param masses        stretch.masses lumped: the vertices' masses when mesh is
+///                      neither tets nor surface (a coarse graph of the surface); empty:
+///                      mesh's own
 /// @throws NumericalError when lambda_2 cannot be found, UsageError for bad options
 CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const SurfaceMesh& surface,
                            const CascadeSetupOptions& options,
-                           const std::vector<double>& arap_factors = {});
+                           const std::vector<double>& arap_factors = {},
+                           const Eigen::VectorXd& masses = Eigen::VectorXd());
 
 }  // namespace unfold

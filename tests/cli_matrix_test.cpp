@@ -50,9 +50,10 @@ enum Factor {
   kMetricsJson,
   kFormat,     // --output .off .obj .ply .stl
   kInputCopy,  // --input_copy .obj
+  kCoarse,     // --surface_solve_hops
 };
 const std::vector<int> kLevels = {
-    kNumInputLevels, test::kNumMatrixConfigs, 2, 2, 2, 4, 3, 2, 2, 2, 4, 2};
+    kNumInputLevels, test::kNumMatrixConfigs, 2, 2, 2, 4, 3, 2, 2, 2, 4, 2, 2};
 const char* const kPictures[] = {"", "shading", "rigidity", "sweep"};
 const char* const kTetFormats[] = {"", ".vtu", ".node"};
 const char* const kFormats[] = {".off", ".obj", ".ply", ".stl"};
@@ -110,6 +111,7 @@ Command command(const test::DesignRow& row, const test::TempDir& dir) {
   if (in.separately || row[kSeparately]) args << " --components separately";
   if (in.fallback || row[kFallback]) args << " --fallback_surface_graph true";
   if (row[kSimplify]) args << " --target_vertices " << kTargetVertices;
+  if (row[kCoarse]) args << " --surface_solve_hops 1";
   const auto add = [&](const std::string& flag, const std::string& name, auto check) {
     run.outputs.push_back({dir.file(name), check});
     args << " --" << flag << " " << dir.file(name);
@@ -151,7 +153,7 @@ std::string describe(const test::DesignRow& row) {
     << (row[kTetOutput] ? std::string(" tets") + kTetFormats[row[kTetOutput]] : "")
     << (row[kConvergence] ? " csv" : "") << (row[kConvergencePng] ? " convergence_png" : "")
     << (row[kMetricsJson] ? " json" : "") << " " << kFormats[row[kFormat]]
-    << (row[kInputCopy] ? " input_copy" : "");
+    << (row[kInputCopy] ? " input_copy" : "") << (row[kCoarse] ? " surface_solve_hops" : "");
   return s.str();
 }
 

@@ -58,10 +58,9 @@ TEST(PipelinePose, CanonicalFormsOfTwoPosesAreCloserThanThePoses) {
 // poses whose legs touch or pass through each other too; its tets were made on
 // a surface curved otherwise than the input (straight joints), so a few flat
 // ones come out inverted at rest and stay so (at most max_inverted of them).
-void expect_nearly_one_canonical_form(const std::string& config,
+void expect_nearly_one_canonical_form(const Options& options, const std::string& config,
                                       const std::vector<ShapePose>& shape_poses,
                                       double max_inverted = 0) {
-  const Options options = load_options(UNFOLD_SOURCE_DIR "/configs/" + config);
   Options paper = paper_options();
   paper.metrics = {"E_rig"};
   const int count = int(shape_poses.size());
@@ -70,6 +69,7 @@ void expect_nearly_one_canonical_form(const std::string& config,
   for (int pose = 0; pose < count; ++pose) {
     poses.push_back(make_articulated_shape(shape_poses[size_t(pose)]));
     forms.push_back(unfold_surface(poses.back(), options));
+    ASSERT_EQ(forms.back().canonical.V.rows(), poses.back().V.rows()) << config;
     const double paper_rig = unfold_surface(poses.back(), paper).metrics.E_rig;
     EXPECT_LT(forms.back().metrics.E_rig, 1.5 * paper_rig) << config << ", pose " << pose;
     EXPECT_LE(forms.back().metrics.inverted_tets, max_inverted * double(forms.back().tets.T.rows()))
@@ -85,6 +85,10 @@ void expect_nearly_one_canonical_form(const std::string& config,
     }
 }
 
+Options config(const std::string& name) {
+  return load_options(UNFOLD_SOURCE_DIR "/configs/" + name);
+}
+
 std::vector<ShapePose> presets() {
   std::vector<ShapePose> poses;
   for (int k = 0; k < ShapePose::num_presets(); ++k) poses.push_back(ShapePose::preset(k));
@@ -92,13 +96,13 @@ std::vector<ShapePose> presets() {
 }
 
 TEST(PipelinePose, InvariantConfigGivesNearlyOneCanonicalForm) {
-  expect_nearly_one_canonical_form("invariant.yaml", presets());
+  expect_nearly_one_canonical_form(config("invariant.yaml"), "invariant.yaml", presets());
 }
 
 TEST(PipelinePose, ContactConfigGivesNearlyOneCanonicalFormWhereLegsTouch) {
   std::vector<ShapePose> poses = presets();
   for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
-  expect_nearly_one_canonical_form("contact.yaml", poses, 0.02);
+  expect_nearly_one_canonical_form(config("contact.yaml"), "contact.yaml", poses, 0.02);
 }
 
 // The default (configs/default.yaml: shape auto) takes the unfolded shape's
@@ -107,7 +111,16 @@ TEST(PipelinePose, ContactConfigGivesNearlyOneCanonicalFormWhereLegsTouch) {
 TEST(PipelinePose, DefaultGivesNearlyOneCanonicalFormWhereLegsTouch) {
   std::vector<ShapePose> poses = presets();
   for (int k = 0; k < ShapePose::num_contact_poses(); ++k) poses.push_back(ShapePose::contact(k));
-  expect_nearly_one_canonical_form("default.yaml", poses, 0.02);
+  expect_nearly_one_canonical_form(config("default.yaml"), "default.yaml", poses, 0.02);
+}
+
+// simplify.surface_solve_hops: the surface stages on clusters one edge across
+// (a quarter of the vertices), carried to all of them, keep the poses'
+// canonical forms together.
+TEST(PipelinePose, ACoarseSurfaceSolveGivesNearlyOneCanonicalForm) {
+  Options options = config("default.yaml");
+  options.surface_solve_hops = 1;
+  expect_nearly_one_canonical_form(options, "default.yaml, surface_solve_hops", presets(), 0.02);
 }
 
 // Crossed legs pass through each other: shape contact decides on the contact

@@ -149,6 +149,23 @@ TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
   EXPECT_LT(volume, 4.0 / 3.0 * M_PI * 8.0);
 }
 
+// tetrahedralize.interior_spacing: a grid of spacing h inside a ball of radius
+// 2 has about its volume over h^3 points (fewer: none within h/2 of a surface vertex).
+TEST(RobustTetrahedralize, TheInteriorGridHasTheGivenSpacing) {
+  const SurfaceMesh sphere = test::uv_sphere(24, 48, 2.0);
+  TetOptions options;
+  options.route = "robust";
+  const double ball = 4.0 / 3.0 * M_PI * 8.0;
+  for (const double h : {0.4, 0.25}) {
+    options.interior_spacing = h;
+    TetReport report;
+    const TetMesh tets = tetrahedralize(sphere, options, &report);
+    expect_usable(sphere, tets);
+    EXPECT_GT(report.num_interior_points, 0.6 * ball / (h * h * h)) << h;
+    EXPECT_LT(report.num_interior_points, 1.0 * ball / (h * h * h)) << h;
+  }
+}
+
 // An N^3 lattice (x, then y, then z in input order) sheared by `shear` as the
 // robust route shears its grid.
 Eigen::MatrixX3d sheared_lattice(int N, double shear) {

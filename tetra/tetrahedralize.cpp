@@ -73,9 +73,9 @@ TetMesh tetrahedralize(const SurfaceMesh& surface, const TetOptions& options, Te
   if (options.route == "robust" ||
       (options.route == "auto" &&
        (counted ? known_intersecting_faces > 0 : surface.V.rows() >= kMinParallelRows)))
-    first_steps = robust_start(surface);
+    first_steps = robust_start(surface, options.interior_spacing);
   const auto robust = [&] {
-    if (!first_steps) first_steps = robust_start(surface);
+    if (!first_steps) first_steps = robust_start(surface, options.interior_spacing);
     r.route = "robust";
     report_stage("tetrahedralizing " + std::to_string(surface.faces.size()) +
                  " faces (robust route)");

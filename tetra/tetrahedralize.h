@@ -21,6 +21,8 @@ struct TetOptions {
   std::string route = "auto";
   double quality = 2.0;   ///< TetGen -q radius-edge bound (conforming route); 0 turns it off
   double max_volume = 0;  ///< TetGen -a bound on tet volume (conforming route); 0: no bound
+  /// robust route: the interior grid's spacing; 0: three times the surface's mean edge length
+  double interior_spacing = 0;
 };
 
 struct TetReport {
@@ -86,8 +88,9 @@ struct RobustStart {
   double seconds = 0;
 };
 
+/// @param spacing the interior grid's; 0: three times the surface's mean edge length
 /// @throws InputError for fewer than 4 vertices or no faces
-RobustStart robust_start(const SurfaceMesh& surface);
+RobustStart robust_start(const SurfaceMesh& surface, double spacing = 0);
 
 /// Delaunay tetrahedralization (delaunay_tets, CGAL) of the surface vertices and
 /// interior grid points (spacing three times the mean edge length), keeping the tets

@@ -29,13 +29,6 @@ uint64_t edge_key(int a, int b) {
   return (uint64_t(uint32_t(a)) << 32) | uint32_t(b);
 }
 
-double mean_edge_length(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F) {
-  double sum = 0;
-  for (Eigen::Index t = 0; t < F.rows(); ++t)
-    for (int k = 0; k < 3; ++k) sum += (V.row(F(t, k)) - V.row(F(t, (k + 1) % 3))).norm();
-  return F.rows() > 0 ? sum / double(3 * F.rows()) : 0;
-}
-
 // A Delaunay tetrahedralization merges points at equal positions, which would
 // drop a surface vertex from the output. Later copies of a position are moved
 // by a tiny deterministic offset for it only; tets joining two copies are
@@ -133,7 +126,7 @@ double lap(std::chrono::steady_clock::time_point* start) {
 
 }  // namespace
 
-RobustStart robust_start(const SurfaceMesh& surface) {
+RobustStart robust_start(const SurfaceMesh& surface, double spacing) {
   auto clock = std::chrono::steady_clock::now();
   RobustStart start;
   const Eigen::MatrixX3i F = triangulate_faces(surface);
@@ -151,8 +144,8 @@ RobustStart robust_start(const SurfaceMesh& surface) {
   // Interior points at three times the mean edge length: measured on the
   // TOSCA/FAUST meshes (docs/tetrahedralization.md), lower E_rig than twice it
   // and a third of the interior points.
-  start.interior =
-      interior_grid_points(surface.V, start.tree, start.orientation, 3 * start.mean_edge_length);
+  start.interior = interior_grid_points(surface.V, start.tree, start.orientation,
+                                        spacing > 0 ? spacing : 3 * start.mean_edge_length);
   start.seconds = lap(&clock);
   return start;
 }
