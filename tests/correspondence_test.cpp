@@ -208,13 +208,6 @@ TEST(PosePictures, EachMeshingDrawnAtItsOwnUnitArea) {
                UsageError);
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The raw distance of a pose_pairs.csv row "class,method,a,b,raw,...".
 double raw_distance_of(const std::string& pairs, const std::string& prefix) {
   const size_t at = pairs.find("\n" + prefix);
@@ -241,9 +234,9 @@ TEST(Batch, RunsAClassMeshedDifferentlyOnItsVtsFiles) {
                               "/configs/paper.yaml --target_vertices 300 --jobs 2 --cmbof_words 32 "
                               "--cmbof_image_size 128 --cmbof_view_subdivisions 0 > " +
                               dir.file("log") + " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir.file("log"));
-  const std::string pairs = read_text(out + "/pose_pairs.csv"),
-                    pose = read_text(out + "/pose_invariance.csv");
+  ASSERT_EQ(std::system(command.c_str()), 0) << test::read_text(dir.file("log"));
+  const std::string pairs = test::read_text(out + "/pose_pairs.csv"),
+                    pose = test::read_text(out + "/pose_invariance.csv");
   EXPECT_EQ(pairs.substr(0, pairs.find('\n')),
             "class,method,shape_a,shape_b,raw_distance,pose_distance,ratio,correspondence");
   EXPECT_EQ(pose.substr(0, pose.find('\n')),
@@ -269,7 +262,7 @@ TEST(Batch, RunsAClassMeshedDifferentlyOnItsVtsFiles) {
   EXPECT_NE(pose.find("\nball,paper,,,,0,none\n"), std::string::npos) << pose;
   EXPECT_EQ(pairs.find("ball,"), std::string::npos) << pairs;
   EXPECT_FALSE(std::filesystem::exists(out + "/poses_ball_raw.png"));
-  EXPECT_TRUE(test::Contains(read_text(dir.file("log")),
+  EXPECT_TRUE(test::Contains(test::read_text(dir.file("log")),
                              "pose invariance: class ball: the meshes differ in vertex count"));
 }
 

@@ -18,13 +18,6 @@
 namespace unfold {
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // The part of the page under "## title", up to the next "## ".
 std::string section(const std::string& page, const std::string& title) {
   const size_t start = page.find("\n## " + title + "\n");
@@ -54,7 +47,7 @@ std::map<std::string, std::string> app_flags(const std::string& app, const test:
   const std::string xml = dir.file(app + ".xml");
   (void)std::system(
       (std::string(UNFOLD_BIN_DIR) + "/" + app + " --helpxml >" + xml + " 2>/dev/null").c_str());
-  const std::string text = read_text(xml);
+  const std::string text = test::read_text(xml);
   static const std::regex flag(
       "<flag><file>([^<]*)</file><name>([^<]*)</name><meaning>[^<]*</meaning>"
       "<default>([^<]*)</default>");
@@ -67,7 +60,7 @@ std::map<std::string, std::string> app_flags(const std::string& app, const test:
 
 TEST(Docs, UsageListsEveryFlagOfEveryAppWithItsDefault) {
   test::TempDir dir;
-  const std::string page = read_text(UNFOLD_SOURCE_DIR "/docs/usage.md");
+  const std::string page = test::read_text(UNFOLD_SOURCE_DIR "/docs/usage.md");
   ASSERT_FALSE(page.empty());
   std::set<std::string> key_flags;
 #define UNFOLD_KEY_FLAG(flag, path, member, help) key_flags.insert(#flag);
@@ -108,7 +101,8 @@ bool same_value(const YAML::Node& a, const YAML::Node& b) {
 }
 
 TEST(Docs, UsageListsEveryConfigKeyWithPathAndDefault) {
-  const std::string text = section(read_text(UNFOLD_SOURCE_DIR "/docs/usage.md"), "Config keys");
+  const std::string text =
+      section(test::read_text(UNFOLD_SOURCE_DIR "/docs/usage.md"), "Config keys");
   ASSERT_FALSE(text.empty()) << "docs/usage.md has no '## Config keys' section";
   const Options options;
   const YAML::Node defaults = YAML::Load(options_to_yaml(options));

@@ -25,7 +25,7 @@
 namespace unfold {
 namespace {
 
-Eigen::MatrixX3d moved(const Eigen::MatrixX3d& V, double scale) {
+Eigen::MatrixX3d turned_and_moved(const Eigen::MatrixX3d& V, double scale) {
   return ((scale * V) * test::random_rotation(7).transpose()).rowwise() +
          Eigen::RowVector3d(3, -1, 2);
 }
@@ -35,9 +35,9 @@ TEST(Retrieval, AMovedScaledCopyMatchesItselfAndIsItsNearestNeighbour) {
   Eigen::MatrixX3d other = test::uv_sphere(12, 16).V;
   other.col(0) *= 2.5;  // an ellipsoid: distinct principal axes
   const RetrievalOptions options;
-  const std::vector<Eigen::MatrixX3d> samples = {retrieval_sample(shape, options),
-                                                 retrieval_sample(moved(shape, 3.7), options),
-                                                 retrieval_sample(other, options)};
+  const std::vector<Eigen::MatrixX3d> samples = {
+      retrieval_sample(shape, options), retrieval_sample(turned_and_moved(shape, 3.7), options),
+      retrieval_sample(other, options)};
   EXPECT_LT(shape_dissimilarity(samples[0], samples[1], options), 1e-9);
   EXPECT_GT(shape_dissimilarity(samples[0], samples[2], options), 0.05);
   const Eigen::MatrixXd D = dissimilarity_matrix(samples, options);
@@ -63,8 +63,8 @@ TEST(PoseInvariance, ZeroForARigidMotionAndAScaleAndMeasuredAtUnitArea) {
   const double area = surface_area(s);
   EXPECT_NEAR(area, 4 * M_PI * 4, 0.1 * 4 * M_PI * 4);  // a coarse sphere of radius 2
   EXPECT_DOUBLE_EQ(surface_area(3 * s.V, F), 9 * area);
-  EXPECT_NEAR(pose_distance(s.V, moved(s.V, 1.0), F), 0, 1e-12);
-  EXPECT_NEAR(pose_distance(s.V, 2.5 * moved(s.V, 1.0), F), 0, 1e-12);
+  EXPECT_NEAR(pose_distance(s.V, turned_and_moved(s.V, 1.0), F), 0, 1e-12);
+  EXPECT_NEAR(pose_distance(s.V, 2.5 * turned_and_moved(s.V, 1.0), F), 0, 1e-12);
   // A non-rigid change is seen, and the same at any common scale.
   Eigen::MatrixX3d bumped = s.V;
   bumped(0, 0) += 1.0;

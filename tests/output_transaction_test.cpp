@@ -21,11 +21,6 @@ void write_text(const std::string& path, const std::string& text) {
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 TEST(OutputTransaction, FilesAppearOnlyOnCommitAndAllTogether) {
   const TempDir dir;
   OutputTransaction outputs;
@@ -35,8 +30,8 @@ TEST(OutputTransaction, FilesAppearOnlyOnCommitAndAllTogether) {
   EXPECT_FALSE(std::filesystem::exists(dir.file("b.txt")));
   EXPECT_EQ(dir.count(), 2);  // the two temporaries
   outputs.commit();
-  EXPECT_EQ(read_text(dir.file("a.txt")), "a");
-  EXPECT_EQ(read_text(dir.file("b.txt")), "b");
+  EXPECT_EQ(test::read_text(dir.file("a.txt")), "a");
+  EXPECT_EQ(test::read_text(dir.file("b.txt")), "b");
   EXPECT_EQ(dir.count(), 2);
 }
 
@@ -53,10 +48,10 @@ TEST(OutputTransaction, AFailureBeforeCommitLeavesNothingAndKeepsOldFiles) {
   } catch (const InputError&) {
   }
   EXPECT_EQ(dir.count(), 1);
-  EXPECT_EQ(read_text(dir.file("old.txt")), "old");
+  EXPECT_EQ(test::read_text(dir.file("old.txt")), "old");
   // Without a transaction open, writes are immediate again.
   write_text(dir.file("c.txt"), "c");
-  EXPECT_EQ(read_text(dir.file("c.txt")), "c");
+  EXPECT_EQ(test::read_text(dir.file("c.txt")), "c");
 }
 
 TEST(OutputTransaction, AFailedRenameTakesBackWhatTheCommitPutInPlace) {

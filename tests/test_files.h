@@ -10,6 +10,12 @@
 
 namespace unfold::test {
 
+/// The whole file as text ("" when it cannot be read).
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 /// A fresh directory named after the running test, removed with its contents.
 class TempDir {
  public:
