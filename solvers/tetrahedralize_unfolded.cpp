@@ -42,7 +42,7 @@ void harmonic_fill(const EdgeGraph& graph, int num_fixed, Eigen::MatrixX3d* X) {
 
 double input_interior_spacing(const SurfaceMesh& input, const Eigen::MatrixX3d& S) {
   const Eigen::MatrixX3i F = triangulate_faces(input);
-  return 3 * mean_edge_length(input.V, F) *
+  return kInteriorSpacingEdges * mean_edge_length(input.V, F) *
          std::sqrt(surface_area(S, F) / surface_area(input.V, F));
 }
 
@@ -54,16 +54,16 @@ UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::M
     throw UsageError("tetrahedralize_unfolded: the unfolded surface has " +
                      std::to_string(S.rows()) + " vertices, the input " + std::to_string(ns));
   UnfoldedTetMesh out;
-  // S is inflated (its edges about 2-3 times the input's): its tets, scaled to
-  // the input's area, are the shapes the interior keeps while it is put into
-  // the input (ARAP ignores rotation, not scale).
-  const Eigen::MatrixX3i F = triangulate_faces(input);
-  const double scale = std::sqrt(surface_area(input.V, F) / surface_area(S, F));
   const SurfaceMesh unfolded{S, input.faces};
   TetMesh tets = tetrahedralize(unfolded, options, &out.report);
   sort_interior_vertices(&tets);
   const int n = int(tets.V.rows());
 
+  // S is inflated (its edges about 2-3 times the input's): its tets, scaled to
+  // the input's area, are the shapes the interior keeps while it is put into
+  // the input (ARAP ignores rotation, not scale).
+  const Eigen::MatrixX3i F = triangulate_faces(input);
+  const double scale = std::sqrt(surface_area(input.V, F) / surface_area(S, F));
   const Eigen::MatrixX3d reference = tets.V * scale;
   const EdgeGraph graph = build_edge_graph(n, Eigen::MatrixXi(tets.T));
   Eigen::MatrixX3d X(n, 3);

@@ -12,6 +12,11 @@
 
 namespace unfold {
 
+/// The robust route's interior grid spacing in mean surface edge lengths:
+/// measured on the TOSCA/FAUST meshes (docs/tetrahedralization.md), lower E_rig
+/// than twice it and a third of the interior points.
+constexpr double kInteriorSpacingEdges = 3;
+
 struct TetOptions {
   /// "conforming": TetGen's boundary-conforming mode (-pY), needs a clean surface;
   /// "robust": Delaunay of surface and interior points carved by the winding number;

@@ -141,11 +141,9 @@ RobustStart robust_start(const SurfaceMesh& surface, double spacing) {
   for (Eigen::Index t = 0; t < F.rows(); ++t)
     volume += surface.V.row(F(t, 0)).dot(surface.V.row(F(t, 1)).cross(surface.V.row(F(t, 2))));
   start.orientation = volume < 0 ? -1 : 1;
-  // Interior points at three times the mean edge length: measured on the
-  // TOSCA/FAUST meshes (docs/tetrahedralization.md), lower E_rig than twice it
-  // and a third of the interior points.
-  start.interior = interior_grid_points(surface.V, start.tree, start.orientation,
-                                        spacing > 0 ? spacing : 3 * start.mean_edge_length);
+  start.interior =
+      interior_grid_points(surface.V, start.tree, start.orientation,
+                           spacing > 0 ? spacing : kInteriorSpacingEdges * start.mean_edge_length);
   start.seconds = lap(&clock);
   return start;
 }
