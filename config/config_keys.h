@@ -54,6 +54,10 @@
     "integrate.iterations: the surface's edges that no tet has join the steps, weighted by this "  \
     "times their inverse length (the unfolded shape's tets leave some out, and without them "      \
     "detail tears: docs/method.md); 0: the tets' edges alone")                                     \
+  X(integrate_pose_pull, "integrate.pose_pull", integrate.pose_pull,                               \
+    "integrate.iterations: how far (0 to 1) the anchored steps start toward the surface "          \
+    "solve's own shape, its pose alone (low-pass filtered by the steps' anchor): more "            \
+    "pose-invariant, higher E_rig (docs/method.md, pose pull); 0: off")                            \
   X(soften_scale, "soften.scale", soften.scale,                                                    \
     "soft joints: solve again from the solution with each ARAP edge's weight times "               \
     "1 / (1 + (k / (scale * median k))^2), k the turn of the solution's rotation field per unit "  \

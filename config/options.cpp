@@ -286,6 +286,12 @@ void validate_options(const Options& o) {
           "integrate.surface_edges", "must be a finite number >= 0 (0 = the tets' edges alone)");
   require(std::isfinite(o.integrate.tolerance) && o.integrate.tolerance >= 0, "integrate.tolerance",
           "must be a finite number >= 0");
+  require(o.integrate.pose_pull >= 0 && o.integrate.pose_pull <= 1, "integrate.pose_pull",
+          "must be in [0, 1] (0 = off)");
+  require(o.integrate.pose_pull == 0 || (o.integrate.iterations >= 2 && o.integrate.anchor > 0),
+          "integrate.pose_pull",
+          "needs the anchored steps that filter it: integrate.iterations >= 2 and "
+          "integrate.anchor > 0");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

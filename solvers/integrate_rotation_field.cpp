@@ -3,8 +3,23 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "geometry/best_rotation.h"
 
 namespace unfold {
+namespace {
+
+// Q moved onto X by the similarity s R q + t that best fits it (least squares).
+Eigen::MatrixX3d fit_similarity(const Eigen::MatrixX3d& Q, const Eigen::MatrixX3d& X) {
+  const Eigen::RowVector3d q_mean = Q.colwise().mean(), x_mean = X.colwise().mean();
+  const Eigen::MatrixX3d q = Q.rowwise() - q_mean;
+  const Eigen::Matrix3d cov = q.transpose() * (X.rowwise() - x_mean);  // sum q x^T
+  const Eigen::Matrix3d R = best_rotation(cov);
+  const double length2 = q.squaredNorm();
+  const double s = length2 > 0 ? (R * cov).trace() / length2 : 1.0;
+  return (s * q * R.transpose()).rowwise() + x_mean;
+}
+
+}  // namespace
 
 IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                         const Eigen::MatrixX3d& Q, double lambda2,
@@ -14,6 +29,11 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
       !(lambda2 > 0))
     throw UsageError(
         "integrate_rotation_field: iterations, anchor and tolerance must be >= 0, lambda_2 > 0");
+  if (!(options.pose_pull >= 0 && options.pose_pull <= 1) ||
+      (options.pose_pull > 0 && (options.iterations < 2 || !(options.anchor > 0))))
+    throw UsageError(
+        "integrate_rotation_field: pose_pull must be in [0, 1], and above 0 needs anchored "
+        "steps (iterations >= 2, anchor > 0) to filter it");
   if (options.weights != "uniform" && options.weights != "inverse_length")
     throw UsageError("integrate_rotation_field: weights must be uniform or inverse_length, got '" +
                      options.weights + "'");
@@ -21,6 +41,7 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
   IntegratedRotations out{Q,
                           {1, options.iterations - 1, options.tolerance, options.anchor * lambda2,
                            5, inverse_length, edge_factors},
+                          {},
                           {}};
   if (options.iterations == 0) return out;
   if (out.anchored.max_iterations > 0 && graph.num_vertices > 1)
@@ -29,6 +50,8 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
     });
   out.positions = arap_solve(graph, P, std::move(out.positions),
                              {1, 1, 0.0, 0.0, 0, inverse_length, edge_factors});
+  if (options.pose_pull > 0 && out.anchored_factor.valid())
+    out.pull = options.pose_pull * (fit_similarity(Q, out.positions) - out.positions);
   return out;
 }
 
@@ -38,6 +61,14 @@ Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& 
   if (integrated.anchored.max_iterations >= 0) {  // iterations > 0: integrated
     const std::unique_ptr<SparseLdlt> factor =
         integrated.anchored_factor.valid() ? integrated.anchored_factor.get() : nullptr;
+    if (factor && integrated.pull.rows() == X.rows()) {
+      // The factor is L + a on the free rows (all but the held first): a (L + a)^-1
+      // passes the modes softer than a (the pose) and damps the stiffer ones.
+      const int m = int(X.rows()) - integrated.anchored.num_fixed;
+      Eigen::MatrixX3d filtered;
+      factor->solve(integrated.pull.bottomRows(m), &filtered);
+      X.bottomRows(m) += integrated.anchored.anchor * filtered;
+    }
     X = arap_solve(graph, P, std::move(X), integrated.anchored, factor.get());
   }
   X.rowwise() -= X.colwise().mean();

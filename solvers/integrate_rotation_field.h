@@ -31,6 +31,13 @@ struct IntegrateOptions {
   /// this (the pipeline builds that graph: mesh/tet_and_surface_edge_graph.h); 0: the
   /// tets' edges alone
   double surface_edges = 0;
+  /// how far the anchored steps start (and are anchored) toward Q's own shape, in [0, 1]:
+  /// Q fitted to the integrated field by a similarity, the difference low-pass filtered
+  /// by the steps' own factor, anchor (L + anchor)^-1, so that Q's pose (its softest
+  /// modes) is kept and its inflation and local distortion are not. The integration
+  /// alone drifts from Q's pose along the limbs, by as much as the input's local
+  /// shapes differ between poses (docs/method.md, pose pull); 0: off
+  double pose_pull = 0;
 };
 
 /// The first step done (integrate_rotations) and what the anchored steps after
@@ -39,10 +46,14 @@ struct IntegratedRotations {
   Eigen::MatrixX3d positions;  ///< the integrated field (n x 3); Q when iterations is 0
   ArapSolveOptions anchored;   ///< the anchored steps' options
   std::future<std::unique_ptr<SparseLdlt>> anchored_factor;  ///< invalid: none made
+  /// pose_pull times (Q fitted to positions) - positions, filtered by the anchored
+  /// steps before they start; empty: none
+  Eigen::MatrixX3d pull;
 };
 
 /// Integrates the rotation field of `Q` (best rotations from P, per vertex):
-/// one ARAP step from Q with one vertex held. The anchored steps' factor
+/// one ARAP step from Q with one vertex held; with options.pose_pull, also the
+/// pull toward Q that the anchored steps filter. The anchored steps' factor
 /// depends on neither the integration nor its result: it is made on another
 /// thread meanwhile (CHOLMOD factorizes on one thread, and so does the
 /// integration's own factor).
@@ -54,14 +65,16 @@ struct IntegratedRotations {
 ///        of its surface's graph Laplacian, the same for every pose
 /// @param edge_factors optional: per edge of `graph` (its order), a factor of the
 ///        steps' weights (ArapSolveOptions::edge_factors); empty: none
-/// @throws UsageError for mismatched sizes, negative options or unknown weights
+/// @throws UsageError for mismatched sizes, negative options, unknown weights, or a
+///         pose_pull outside [0, 1] or without anchored steps (iterations >= 2, anchor > 0)
 IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                         const Eigen::MatrixX3d& Q, double lambda2,
                                         const IntegrateOptions& options,
                                         const std::vector<double>& edge_factors = {});
 
 /// Up to iterations - 1 ARAP steps anchored to the integrated field with weight
-/// anchor * lambda2 (integrate_rotations' options).
+/// anchor * lambda2 (integrate_rotations' options), the field first moved by
+/// its pull, filtered: a (L + a)^-1 pull, a = anchor * lambda2.
 /// @return zero-mean positions (n x 3)
 /// @throws UsageError for mismatched sizes
 Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& P,

@@ -35,6 +35,16 @@ TEST(Config, ShippedDefaultEqualsBuiltInDefaults) {
   EXPECT_NE(options_to_yaml(shipped).find("edge_ratio_band: [0.95, 1.05]"), std::string::npos);
 }
 
+// configs/fast.yaml is the default with the coarse surface solve and the pose pull.
+TEST(Config, FastIsTheDefaultWithACoarseSolveAndAPosePull) {
+  const Options fast = load_options(UNFOLD_SOURCE_DIR "/configs/fast.yaml");
+  Options expected;
+  expected.surface_solve_hops = 1;
+  expected.integrate.anchor = 40;
+  expected.integrate.pose_pull = 0.2;
+  EXPECT_EQ(options_to_yaml(fast), options_to_yaml(expected));
+}
+
 // base: paper starts a config from the paper's parameters: paper.yaml lists
 // them all and equals paper_options(); a config of one key over base: paper
 // differs from it in that key alone.
@@ -103,6 +113,9 @@ TEST(Config, ErrorsNameTheKey) {
                      "'integrate.surface_edges' must be a finite number >= 0");
   expect_usage_error("integrate:\n  surface_edges: .nan\n",
                      "'integrate.surface_edges' must be a finite number >= 0");
+  expect_usage_error("integrate:\n  pose_pull: 1.5\n", "'integrate.pose_pull' must be in [0, 1]");
+  expect_usage_error("integrate:\n  pose_pull: 0.2\n  iterations: 1\n",
+                     "'integrate.pose_pull' needs the anchored steps");
   expect_usage_error("cascade: [1, 2\n", "invalid YAML");
   expect_usage_error("- 1\n- 2\n", "not a mapping");
   // The surface domain has no tets: no cotangent weights, no volumes.

@@ -13,7 +13,8 @@ namespace unfold {
 namespace {
 
 struct Grid {
-  TetMesh mesh = test::grid_tet_mesh(6, 3, 3);
+  explicit Grid(int length = 6) : mesh(test::grid_tet_mesh(length, 3, 3)) {}
+  TetMesh mesh;
   EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
   double lambda2 = fiedler_value(graph_laplacian(graph));
   Eigen::MatrixX3d centred() const { return mesh.V.rowwise() - mesh.V.colwise().mean(); }
@@ -23,6 +24,20 @@ IntegrateOptions steps(int iterations) {
   IntegrateOptions options;
   options.iterations = iterations;
   return options;
+}
+
+// The grid bent along an arc of radius 5, its cross-sections inflated `puff` times.
+Eigen::MatrixX3d bent_bar(const Grid& g, double puff) {
+  Eigen::MatrixX3d X = g.mesh.V;
+  const double radius = 5;
+  for (int i = 0; i < X.rows(); ++i) {
+    const double t = g.mesh.V(i, 0) / radius, y = g.mesh.V(i, 1) - 1.5;
+    const double z = g.mesh.V(i, 2) - 1.5;
+    X(i, 0) = (radius - puff * z) * std::sin(t);
+    X(i, 1) = puff * y;
+    X(i, 2) = radius - (radius - puff * z) * std::cos(t);
+  }
+  return X;
 }
 
 TEST(IntegrateRotationField, RecoversARigidMotion) {
@@ -48,24 +63,44 @@ TEST(IntegrateRotationField, DropsAUniformScale) {
 // drops the inflation.
 TEST(IntegrateRotationField, KeepsABendAndDropsTheInflation) {
   const Grid g;
-  const auto bend = [&](double puff) {
-    Eigen::MatrixX3d X = g.mesh.V;
-    const double radius = 5;
-    for (int i = 0; i < X.rows(); ++i) {
-      const double t = g.mesh.V(i, 0) / radius, y = g.mesh.V(i, 1) - 1.5;
-      const double z = g.mesh.V(i, 2) - 1.5;
-      X(i, 0) = (radius - puff * z) * std::sin(t);
-      X(i, 1) = puff * y;
-      X(i, 2) = radius - (radius - puff * z) * std::cos(t);
-    }
-    return X;
-  };
-  const Eigen::MatrixX3d bent = bend(1.0), puffed = bend(1.6);
+  const Eigen::MatrixX3d bent = bent_bar(g, 1.0), puffed = bent_bar(g, 1.6);
   const Eigen::MatrixX3d X =
       integrate_rotation_field(g.graph, g.mesh.V, puffed, g.lambda2, steps(20));
   const double to_bent = aligned_distance(X, bent), to_straight = aligned_distance(X, g.mesh.V);
   EXPECT_LT(to_bent, 0.5 * to_straight) << to_bent << " vs " << to_straight;
   EXPECT_LT(to_bent, 0.25 * aligned_distance(puffed, bent));
+}
+
+IntegrateOptions pulled(int iterations, double pose_pull) {
+  IntegrateOptions options = steps(iterations);
+  options.pose_pull = pose_pull;
+  return options;
+}
+
+// Q a similarity of the rest shape: the integration recovers its rotation, the
+// fitted Q is the integrated field itself, and a pull changes nothing.
+TEST(IntegrateRotationField, APosePullTowardASimilarityOfTheResultChangesNothing) {
+  const Grid g;
+  const Eigen::Matrix3d R = test::random_rotation(7);
+  const Eigen::MatrixX3d Q =
+      (2.5 * g.mesh.V * R.transpose()).rowwise() + Eigen::RowVector3d(1, 2, 3);
+  const Eigen::MatrixX3d X =
+      integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, pulled(5, 1));
+  EXPECT_LT((X - g.centred() * R.transpose()).cwiseAbs().maxCoeff(), 1e-8);
+}
+
+// Q that similarity with noise at every vertex: the steps start from the pull
+// low-pass filtered, so a full pull ends far nearer the rest shape than Q's own
+// shape is (an unfiltered full pull would end at Q's shape).
+TEST(IntegrateRotationField, APosePullFiltersOutTheSolvesNoise) {
+  const Grid g(12);
+  const Eigen::Matrix3d R = test::random_rotation(9);
+  const Eigen::MatrixX3d noise = 0.3 * Eigen::MatrixX3d::Random(g.mesh.V.rows(), 3);
+  const Eigen::MatrixX3d Q = 2.0 * (g.mesh.V + noise) * R.transpose();
+  const Eigen::MatrixX3d rest = g.centred() * R.transpose();
+  const Eigen::MatrixX3d X =
+      integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, pulled(20, 1));
+  EXPECT_LT(aligned_distance(X, rest), 0.3 * aligned_distance(Q / 2.0, rest));
 }
 
 TEST(IntegrateRotationField, TurnsWithItsInput) {
@@ -90,6 +125,15 @@ TEST(IntegrateRotationField, RefusesBadOptions) {
   cotangent.weights = "cotangent";
   EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, cotangent),
                UsageError);
+  IntegrateOptions pull = steps(2);
+  pull.pose_pull = 1.5;
+  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, pull), UsageError);
+  pull.pose_pull = 0.5;
+  pull.anchor = 0;  // nothing to filter the pull with
+  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, pull), UsageError);
+  pull = steps(1);
+  pull.pose_pull = 0.5;
+  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, pull), UsageError);
 }
 
 }  // namespace
