@@ -8,7 +8,6 @@
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
-#include <malloc.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -20,6 +19,7 @@
 
 #include "apps/app_help.h"
 #include "core/errors.h"
+#include "core/keep_freed_memory.h"
 #include "core/progress.h"
 #include "core/terminal_progress.h"
 
@@ -168,16 +168,7 @@ class ProgressScope : public google::LogSink {
 /// stderr and the exit code of its class.
 inline int run_main(const char* name, const AppHelp& help, int argc, char** argv,
                     const std::function<int()>& body) {
-#ifdef __GLIBC__
-  // glibc hands freed memory above 128 KB at the heap's top back to the system,
-  // and large blocks get fresh mappings: the solvers' n x 3 buffers, freed and
-  // made again at every step and stage, then cost their page faults each time
-  // (wolf0's default: 17k faults -> 12k, 8-10 % of its CPU time). Kept in the
-  // process instead, up to sizes that leave the peak memory as it was (david0's
-  // default; 32 MB and 256 MB raised it by a fifth).
-  mallopt(M_MMAP_THRESHOLD, 4 << 20);
-  mallopt(M_TRIM_THRESHOLD, 64 << 20);
-#endif
+  keep_freed_memory();
   try {
     bool full = false;
     if (asks_for_help(argc, argv, &full)) {

@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/keep_freed_memory.h"
 #include "core/seconds_since.h"
 #include "mesh/edge_graph.h"
 #include "mesh/read_surface_mesh.h"
@@ -200,6 +201,7 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   google::InitGoogleLogging(argv[0]);
   FLAGS_minloglevel = 1;
+  unfold::keep_freed_memory();  // as the apps do: their stages' timings
   try {
     return unfold::run(argc, argv);
   } catch (const std::exception& e) {
