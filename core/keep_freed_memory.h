@@ -9,8 +9,8 @@ namespace unfold {
 /// heap is trimmed only above 64 MB free at its top, and keeps 128 MB whenever
 /// it grows or is trimmed. Without it each stage's n x 3 buffers, sparse
 /// matrices and factors are faulted in again: david0's paper config takes
-/// 144k page faults and 5.3 s, with it 67-80k and 4.3-4.5 s (the default
-/// 7.7 -> 7.0 s), at a peak memory 15-25 % higher (docs/performance.md).
+/// 140k page faults without it and 77k with it, 16 % less time (the default
+/// 7 %), at a peak memory 20-30 % higher there (docs/performance.md).
 /// Process-wide; elsewhere a no-op.
 void keep_freed_memory();
 

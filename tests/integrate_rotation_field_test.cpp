@@ -26,20 +26,6 @@ IntegrateOptions steps(int iterations) {
   return options;
 }
 
-// The grid bent along an arc of radius 5, its cross-sections inflated `puff` times.
-Eigen::MatrixX3d bent_bar(const Grid& g, double puff) {
-  Eigen::MatrixX3d X = g.mesh.V;
-  const double radius = 5;
-  for (int i = 0; i < X.rows(); ++i) {
-    const double t = g.mesh.V(i, 0) / radius, y = g.mesh.V(i, 1) - 1.5;
-    const double z = g.mesh.V(i, 2) - 1.5;
-    X(i, 0) = (radius - puff * z) * std::sin(t);
-    X(i, 1) = puff * y;
-    X(i, 2) = radius - (radius - puff * z) * std::cos(t);
-  }
-  return X;
-}
-
 TEST(IntegrateRotationField, RecoversARigidMotion) {
   const Grid g;
   const Eigen::Matrix3d R = test::random_rotation(3);
@@ -63,7 +49,19 @@ TEST(IntegrateRotationField, DropsAUniformScale) {
 // drops the inflation.
 TEST(IntegrateRotationField, KeepsABendAndDropsTheInflation) {
   const Grid g;
-  const Eigen::MatrixX3d bent = bent_bar(g, 1.0), puffed = bent_bar(g, 1.6);
+  const auto bend = [&](double puff) {
+    Eigen::MatrixX3d X = g.mesh.V;
+    const double radius = 5;
+    for (int i = 0; i < X.rows(); ++i) {
+      const double t = g.mesh.V(i, 0) / radius, y = g.mesh.V(i, 1) - 1.5;
+      const double z = g.mesh.V(i, 2) - 1.5;
+      X(i, 0) = (radius - puff * z) * std::sin(t);
+      X(i, 1) = puff * y;
+      X(i, 2) = radius - (radius - puff * z) * std::cos(t);
+    }
+    return X;
+  };
+  const Eigen::MatrixX3d bent = bend(1.0), puffed = bend(1.6);
   const Eigen::MatrixX3d X =
       integrate_rotation_field(g.graph, g.mesh.V, puffed, g.lambda2, steps(20));
   const double to_bent = aligned_distance(X, bent), to_straight = aligned_distance(X, g.mesh.V);
