@@ -99,6 +99,9 @@
   X(stretch_masses, "stretch.masses", energy.stretch_masses,                                       \
     "stretch term's vertex weights: uniform (paper) or lumped (each vertex's share of the "        \
     "volume or, with domain: surface, of the area: independent of where the mesh is dense)")       \
+  X(stretch_mass_power, "stretch.mass_power", energy.stretch_mass_power,                           \
+    "stretch.masses lumped: the shares to this power, in [0, 1] (below 1 densely meshed parts "    \
+    "weigh more: humans' arms out, lower E_geo, less meshing-independent; docs/method.md)")        \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")     \
   X(arap_weights, "arap.weights", energy.arap_weights,                                             \
     "ARAP edge weights w_ij: uniform (paper) or cotangent")                                        \

@@ -334,6 +334,10 @@ void validate_options(const Options& o) {
           "dpmu needs arap.weight: 0 and edge_length.weight > 0 (see configs/dpmu.yaml)");
   require(e.stretch_masses == "uniform" || e.stretch_masses == "lumped", "stretch.masses",
           "must be uniform or lumped, got '" + e.stretch_masses + "'");
+  require(e.stretch_mass_power >= 0 && e.stretch_mass_power <= 1, "stretch.mass_power",
+          "must be a number in [0, 1]");
+  require(e.stretch_mass_power == 1 || e.stretch_masses == "lumped", "stretch.mass_power",
+          "is not 1, but stretch.masses is uniform: it raises the lumped masses");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
           "must be uniform or cotangent, got '" + e.arap_weights + "'");
   // The surface domain's energy lives on the triangles' edges: no tets to take

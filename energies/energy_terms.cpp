@@ -24,7 +24,9 @@ Eigen::VectorXd stretch_masses(const TetMesh& tets, const EnergyOptions& options
   if (tets.T.rows() == 0)
     throw UsageError(
         "stretch.masses: lumped needs the surface's vertex areas on a mesh without tets");
-  return lumped_masses(tets.V, tets.T);
+  const Eigen::VectorXd shares = lumped_masses(tets.V, tets.T);
+  return options.stretch_mass_power == 1 ? shares
+                                         : shares.array().pow(options.stretch_mass_power).matrix();
 }
 
 }  // namespace

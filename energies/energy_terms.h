@@ -15,6 +15,7 @@ namespace unfold {
 struct EnergyOptions {
   double stretch_weight = 1.0;             ///< k_ij (paper: 1)
   std::string stretch_masses = "uniform";  ///< uniform (paper: every vertex 1) or lumped
+  double stretch_mass_power = 1.0;         ///< lumped: the shares to this power, in [0, 1]
   double arap_weight = 1.0;                ///< ARAP weight relative to beta (paper: 1)
   std::string arap_weights = "uniform";    ///< w_ij: uniform (paper) or cotangent
   std::string user_pairs_file;             ///< pair constraints (Eq. 11); empty: none

@@ -54,9 +54,10 @@ class StretchEnergy : public QuadraticTerm {
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
   /// sqrt(2) m with masses; empty without (2 1 1^T vanishes on zero-mean Q).
   Eigen::VectorXd rank_one_hessian() const override;
+  /// Vertex i's mass (at mean 1); 1 without masses.
+  double mass(int i) const { return masses_.size() ? masses_[i] : 1.0; }
 
  private:
-  double mass(int i) const { return masses_.size() ? masses_[i] : 1.0; }
   std::shared_ptr<const EdgeGraph> graph_;
   Eigen::VectorXd masses_;
 };

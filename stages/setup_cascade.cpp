@@ -15,15 +15,16 @@ namespace unfold {
 namespace {
 
 // stretch.masses: lumped: the domain's lumped masses (tet volumes; the surface's
-// areas when mesh has no tets), scaled to mean 1 so that M = n and the energy
-// is bounded for beta > n / lambda_2 - 1 with lambda_2 that of L x = lambda M x
-// (docs/method.md); uniform: none.
+// areas when mesh has no tets) to stretch.mass_power, scaled to mean 1 so that
+// M = n and the energy is bounded for beta > n / lambda_2 - 1 with lambda_2 that
+// of L x = lambda M x (docs/method.md); uniform: none.
 Eigen::VectorXd stretch_masses(const TetMesh& mesh, const SurfaceMesh& surface,
                                const EnergyOptions& options, const Eigen::VectorXd& given) {
   if (options.stretch_masses != "lumped") return {};
   Eigen::VectorXd m = given.size() > 0    ? given
                       : mesh.T.rows() > 0 ? lumped_masses(mesh.V, mesh.T)
                                           : lumped_masses(mesh.V, triangulate_faces(surface));
+  if (options.stretch_mass_power != 1) m = m.array().pow(options.stretch_mass_power).matrix();
   return m * (double(m.size()) / m.sum());
 }
 

@@ -116,6 +116,11 @@ TEST(Config, ErrorsNameTheKey) {
   expect_usage_error("integrate:\n  pose_pull: 1.5\n", "'integrate.pose_pull' must be in [0, 1]");
   expect_usage_error("integrate:\n  pose_pull: 0.2\n  iterations: 1\n",
                      "'integrate.pose_pull' needs the anchored steps");
+  expect_usage_error("stretch:\n  mass_power: 1.5\n",
+                     "'stretch.mass_power' must be a number in [0, 1]");
+  expect_usage_error("stretch:\n  mass_power: .nan\n", "'stretch.mass_power' must be a number in");
+  expect_usage_error("stretch:\n  masses: uniform\n  mass_power: 0.5\n",
+                     "'stretch.mass_power' is not 1, but stretch.masses is uniform");
   expect_usage_error("cascade: [1, 2\n", "invalid YAML");
   expect_usage_error("- 1\n- 2\n", "not a mapping");
   // The surface domain has no tets: no cotangent weights, no volumes.

@@ -23,6 +23,7 @@
 #include "solvers/local_global.h"
 #include "solvers/quadratic_part.h"
 #include "solvers/smoothed_aggregation.h"
+#include "stages/setup_cascade.h"
 #include "test_meshes.h"
 #include "test_problem.h"
 
@@ -94,6 +95,51 @@ TEST(LumpedStretch, IsTheMassWeightedSumOverNonNeighbourPairs) {
               1e-9 * std::abs(brute));
   EXPECT_THROW(StretchEnergy(graph, 1.0, Eigen::VectorXd::Ones(n - 1)), UsageError);
   EXPECT_THROW(StretchEnergy(graph, 1.0, Eigen::VectorXd::Zero(n)), UsageError);
+}
+
+// stretch.mass_power p: the masses are the shares to p, at mean 1, both where the
+// pipeline sets the cascade up and where the energy terms take the mesh's own.
+TEST(LumpedStretch, AMassPowerRaisesTheSharesToIt) {
+  const TetMesh grid = graded_grid(4, 2, 2);
+  const int n = int(grid.V.rows());
+  const EdgeGraph graph = build_edge_graph(n, grid.T);
+  const Eigen::VectorXd share = lumped_masses(grid.V, grid.T);
+  for (const double power : {1.0, 0.5, 0.0}) {
+    CascadeSetupOptions options;
+    options.energy = lumped();
+    options.energy.stretch_mass_power = power;
+    const CascadeSetup setup = setup_cascade(graph, grid, SurfaceMesh{}, options);
+    const auto* set_up = dynamic_cast<const StretchEnergy*>(setup.problem->terms[0].get());
+    const EnergyTerms terms =
+        make_energy_terms(grid, std::make_shared<const EdgeGraph>(graph), options.energy);
+    const auto* own = dynamic_cast<const StretchEnergy*>(terms[0].get());
+    ASSERT_TRUE(set_up && own);
+    double sum = 0;
+    for (int i = 0; i < n; ++i) {
+      sum += set_up->mass(i);
+      const double expected = std::pow(share[i] / share[0], power);
+      EXPECT_NEAR(set_up->mass(i) / set_up->mass(0), expected, 1e-12 * expected) << power;
+      EXPECT_NEAR(own->mass(i) / own->mass(0), expected, 1e-12 * expected) << power;
+    }
+    EXPECT_NEAR(sum, n, 1e-9 * n);
+  }
+}
+
+// Power 0 weighs every vertex alike: the paper's canonical form with uniform masses.
+TEST(LumpedStretch, AMassPowerOfZeroIsUniformMasses) {
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 40);
+  Eigen::MatrixX3d canonical[2];
+  for (const bool lumped_at_zero : {false, true}) {
+    Options options = load_options(UNFOLD_SOURCE_DIR "/configs/paper.yaml");
+    options.tet.quality = 0;
+    if (lumped_at_zero) {
+      options.energy.stretch_masses = "lumped";
+      options.energy.stretch_mass_power = 0;
+    }
+    canonical[lumped_at_zero] = unfold_surface(shape, options).canonical.V;
+  }
+  const double radius = canonical[0].rowwise().norm().maxCoeff();
+  EXPECT_LT((canonical[1] - canonical[0]).cwiseAbs().maxCoeff(), 1e-6 * radius);
 }
 
 TEST(LumpedStretch, FiedlerValueIsThatOfTheGeneralizedProblem) {
