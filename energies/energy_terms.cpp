@@ -24,12 +24,16 @@ Eigen::VectorXd stretch_masses(const TetMesh& tets, const EnergyOptions& options
   if (tets.T.rows() == 0)
     throw UsageError(
         "stretch.masses: lumped needs the surface's vertex areas on a mesh without tets");
-  const Eigen::VectorXd shares = lumped_masses(tets.V, tets.T);
-  return options.stretch_mass_power == 1 ? shares
-                                         : shares.array().pow(options.stretch_mass_power).matrix();
+  return stretch_mass_shares(lumped_masses(tets.V, tets.T), options);
 }
 
 }  // namespace
+
+Eigen::VectorXd stretch_mass_shares(Eigen::VectorXd shares, const EnergyOptions& options) {
+  // At 1 the shares themselves, bit for bit.
+  if (options.stretch_mass_power != 1) shares = shares.array().pow(options.stretch_mass_power);
+  return shares;
+}
 
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
                               const EnergyOptions& options, const Eigen::VectorXd& masses,

@@ -26,12 +26,17 @@ struct EnergyOptions {
 
 using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;
 
+/// stretch.masses lumped: the stretch term's masses from the vertices' shares of
+/// the volume or area (lumped masses), each to options.stretch_mass_power.
+/// @param shares positive lumped masses (any scale)
+Eigen::VectorXd stretch_mass_shares(Eigen::VectorXd shares, const EnergyOptions& options);
+
 /// The terms enabled by `options` on a tet mesh: stretch, and ARAP, edge
 /// lengths, user pairs and volume when configured (weight > 0, a pairs file). The terms
 /// share `graph`.
 /// @param graph  the edge graph of `tets` (of its surface when tets.T is empty)
 /// @param masses the stretch term's vertex masses with stretch_masses: lumped
-///        (mesh/lumped_masses.h); when empty, the lumped volumes of tets.T
+///        (stretch_mass_shares); when empty, those of the lumped volumes of tets.T
 /// @param arap_factors per graph edge, factors of the ARAP weights (soft joints,
 ///        energies/soft_joint_factors.h); empty: none
 /// @throws UsageError for an unknown arap_weights or stretch_masses, lumped masses

@@ -21,10 +21,11 @@ namespace {
 Eigen::VectorXd stretch_masses(const TetMesh& mesh, const SurfaceMesh& surface,
                                const EnergyOptions& options, const Eigen::VectorXd& given) {
   if (options.stretch_masses != "lumped") return {};
-  Eigen::VectorXd m = given.size() > 0    ? given
-                      : mesh.T.rows() > 0 ? lumped_masses(mesh.V, mesh.T)
-                                          : lumped_masses(mesh.V, triangulate_faces(surface));
-  if (options.stretch_mass_power != 1) m = m.array().pow(options.stretch_mass_power).matrix();
+  const Eigen::VectorXd m =
+      stretch_mass_shares(given.size() > 0    ? given
+                          : mesh.T.rows() > 0 ? lumped_masses(mesh.V, mesh.T)
+                                              : lumped_masses(mesh.V, triangulate_faces(surface)),
+                          options);
   return m * (double(m.size()) / m.sum());
 }
 
