@@ -102,6 +102,13 @@
   X(stretch_mass_power, "stretch.mass_power", energy.stretch_mass_power,                           \
     "stretch.masses lumped: the shares to this power, in [0, 1] (below 1 densely meshed parts "    \
     "weigh more: humans' arms out, lower E_geo, less meshing-independent; docs/method.md)")        \
+  X(stretch_local, "stretch.local", energy.stretch_local,                                          \
+    "share in [0, 1) of the spread taken within soft geodesic regions instead of about the "       \
+    "centroid: limbs splay instead of lining up, lower E_rig and E_geo (docs/method.md); 0: off")  \
+  X(stretch_local_radius, "stretch.local_radius", energy.stretch_local_radius,                     \
+    "stretch.local: the regions' Gaussian width, times the geodesic diameter")                     \
+  X(stretch_local_regions, "stretch.local_regions", energy.stretch_local_regions,                  \
+    "stretch.local: how many regions (farthest-point landmarks)")                                  \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")     \
   X(arap_weights, "arap.weights", energy.arap_weights,                                             \
     "ARAP edge weights w_ij: uniform (paper) or cotangent")                                        \

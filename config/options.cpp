@@ -157,6 +157,10 @@ void require(bool ok, const std::string& key, const std::string& what) {
 // the run builds its problem, where make_backend checks the terms again.
 EnergyTerms probe_terms(EnergyOptions options) {
   options.user_pairs_file.clear();
+  // The local spread's regions change no capability, and their geodesics run
+  // an OpenMP loop: in unfold_batch's parent that left its forked children's
+  // OpenMP teams waiting for threads that were not forked with them.
+  options.stretch_local = 0;
   TetMesh tet;
   tet.V = (Eigen::MatrixX3d(4, 3) << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1).finished();
   tet.T = (Eigen::MatrixX4i(1, 4) << 0, 1, 2, 3).finished();
@@ -338,6 +342,11 @@ void validate_options(const Options& o) {
           "must be a number in [0, 1]");
   require(e.stretch_mass_power == 1 || e.stretch_masses == "lumped", "stretch.mass_power",
           "is not 1, but stretch.masses is uniform: it raises the lumped masses");
+  require(e.stretch_local >= 0 && e.stretch_local < 1, "stretch.local",
+          "must be a number in [0, 1)");
+  require(std::isfinite(e.stretch_local_radius) && e.stretch_local_radius > 0,
+          "stretch.local_radius", "must be a finite number > 0");
+  require(e.stretch_local_regions >= 1, "stretch.local_regions", "must be at least 1");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
           "must be uniform or cotangent, got '" + e.arap_weights + "'");
   // The surface domain's energy lives on the triangles' edges: no tets to take

@@ -39,8 +39,13 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const E
                               const EnergyOptions& options, const Eigen::VectorXd& masses,
                               const std::vector<double>& arap_factors) {
   EnergyTerms terms;
-  terms.push_back(std::make_unique<StretchEnergy>(graph, options.stretch_weight,
-                                                  stretch_masses(tets, options, masses)));
+  terms.push_back(std::make_unique<StretchEnergy>(
+      graph, options.stretch_weight, stretch_masses(tets, options, masses),
+      options.stretch_local > 0
+          ? spread_regions(tets.V, *graph,
+                           {options.stretch_local, options.stretch_local_radius,
+                            options.stretch_local_regions})
+          : SpreadRegions{}));
   std::vector<double> weights;
   if (options.arap_weights == "uniform")
     weights.assign(size_t(graph->num_edges()), 1.0);

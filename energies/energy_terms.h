@@ -16,6 +16,9 @@ struct EnergyOptions {
   double stretch_weight = 1.0;             ///< k_ij (paper: 1)
   std::string stretch_masses = "uniform";  ///< uniform (paper: every vertex 1) or lumped
   double stretch_mass_power = 1.0;         ///< lumped: the shares to this power, in [0, 1]
+  double stretch_local = 0.0;              ///< share of the spread within regions, in [0, 1)
+  double stretch_local_radius = 0.3;       ///< the regions' width, times the geodesic diameter
+  int stretch_local_regions = 32;          ///< how many regions
   double arap_weight = 1.0;                ///< ARAP weight relative to beta (paper: 1)
   std::string arap_weights = "uniform";    ///< w_ij: uniform (paper) or cotangent
   std::string user_pairs_file;             ///< pair constraints (Eq. 11); empty: none

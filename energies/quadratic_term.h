@@ -41,6 +41,8 @@ class QuadraticTerm : public EnergyTerm {
   virtual double constant(const Rotations& R) const { return derived_constant(R); }
   /// u with true Hessian = H + u u^T (up to multiples of 1 1^T); empty: none. Default: none.
   virtual Eigen::VectorXd rank_one_hessian() const { return {}; }
+  /// U with true Hessian = H + U U^T + (rank_one_hessian part); n x 0: none.
+  virtual Eigen::MatrixXd region_hessian() const { return {}; }
 
   /// H = J^T J from the residuals' Jacobians at Q = 0.
   /// @throws UsageError if a residual block's Jacobian does not act alike on x, y, z

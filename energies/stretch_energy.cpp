@@ -9,17 +9,25 @@
 namespace unfold {
 
 StretchEnergy::StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weight,
-                             Eigen::VectorXd masses)
+                             Eigen::VectorXd masses, SpreadRegions regions)
     : QuadraticTerm(graph->num_vertices, weight, false),
       graph_(std::move(graph)),
-      masses_(std::move(masses)) {
-  if (masses_.size() == 0) return;
-  if (masses_.size() != graph_->num_vertices)
-    throw UsageError("stretch term: " + std::to_string(masses_.size()) + " masses for " +
-                     std::to_string(graph_->num_vertices) + " vertices");
-  if (!masses_.allFinite() || !(masses_.minCoeff() > 0))
-    throw UsageError("stretch term: every vertex mass must be positive and finite");
-  masses_ *= double(masses_.size()) / masses_.sum();
+      masses_(std::move(masses)),
+      regions_(std::move(regions)) {
+  if (masses_.size() > 0) {
+    if (masses_.size() != graph_->num_vertices)
+      throw UsageError("stretch term: " + std::to_string(masses_.size()) + " masses for " +
+                       std::to_string(graph_->num_vertices) + " vertices");
+    if (!masses_.allFinite() || !(masses_.minCoeff() > 0))
+      throw UsageError("stretch term: every vertex mass must be positive and finite");
+    masses_ *= double(masses_.size()) / masses_.sum();
+  }
+  region_mass_.setZero(regions_.count);
+  for (const auto& t : regions_.weights) {
+    if (t.row() < 0 || t.row() >= graph_->num_vertices || t.col() < 0 || t.col() >= regions_.count)
+      throw UsageError("stretch term: a region weight names a vertex or region out of range");
+    region_mass_[t.col()] += mass(t.row()) * t.value();
+  }
 }
 
 double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& /*R*/,
@@ -28,7 +36,19 @@ double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& 
   const SpreadResidual spread(masses_.size() ? (masses_.transpose() * Q).transpose() / n
                                              : Eigen::Vector3d(Q.colwise().mean().transpose()));
   double energy = 0;
-  for (int i = 0; i < n; ++i) energy += sum->add<3, 1>(spread, {i}, -2.0 * n * mass(i));
+  const double local = regions_.local;
+  for (int i = 0; i < n; ++i)
+    energy += sum->add<3, 1>(spread, {i}, -2.0 * n * (1.0 - local) * mass(i));
+  if (local > 0) {
+    // Each region's centroid, held fixed like c_m above.
+    Eigen::MatrixX3d c = Eigen::MatrixX3d::Zero(regions_.count, 3);
+    for (const auto& t : regions_.weights)
+      c.row(t.col()) += mass(t.row()) * t.value() * Q.row(t.row());
+    for (int k = 0; k < regions_.count; ++k) c.row(k) /= region_mass_[k];
+    for (const auto& t : regions_.weights)
+      energy += sum->add<3, 1>(SpreadResidual(c.row(t.col()).transpose()), {int(t.row())},
+                               -2.0 * n * local * mass(t.row()) * t.value());
+  }
   const DifferenceResidual edge;
   for (int e = 0; e < graph_->num_edges(); ++e) {
     const int a = graph_->edges(e, 0), b = graph_->edges(e, 1);
@@ -53,7 +73,18 @@ void StretchEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>
 }
 
 Eigen::VectorXd StretchEnergy::rank_one_hessian() const {
-  return masses_.size() ? Eigen::VectorXd(std::sqrt(2.0) * masses_) : Eigen::VectorXd();
+  return masses_.size() ? Eigen::VectorXd(std::sqrt(2.0 * (1.0 - regions_.local)) * masses_)
+                        : Eigen::VectorXd();
+}
+
+Eigen::MatrixXd StretchEnergy::region_hessian() const {
+  const int n = graph_->num_vertices;
+  if (regions_.local == 0) return Eigen::MatrixXd(n, 0);
+  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n, regions_.count);
+  for (const auto& t : regions_.weights)
+    U(t.row(), t.col()) =
+        std::sqrt(2.0 * n * regions_.local / region_mass_[t.col()]) * mass(t.row()) * t.value();
+  return U;
 }
 
 }  // namespace unfold

@@ -14,12 +14,23 @@
 // products and the direct one needs not (docs/method.md). Each vertex then
 // pulls with its share of the shape, not as one vertex: the result no longer
 // depends on where the mesh is dense.
+//
+// Local spread (stretch.local t > 0, energies/spread_regions.h): a share t of
+// the spread is taken within soft regions (weights w_ik, sum_k w_ik = 1) about
+// their own centroids c_k: -2M [(1 - t) sum_i m_i |q_i - c_m|^2 + t sum_k sum_i
+// m_i w_ik |q_i - c_k|^2]. By the law of total variance the second sum is the
+// first less the spread of the regions' centroids, sum_k M_k |c_k - c_m|^2, so
+// the energy is bounded wherever t = 0's is, and H's sparse part is unchanged:
+// the centroids add 2M t sum_k a_k a_k^T / M_k (a_ik = m_i w_ik), whose columns
+// region_hessian() returns (the direct global step adds them by Woodbury's
+// identity, docs/method.md).
 #pragma once
 
 #include <Eigen/Core>
 #include <memory>
 
 #include "energies/quadratic_term.h"
+#include "energies/spread_regions.h"
 #include "mesh/edge_graph.h"
 
 namespace unfold {
@@ -42,9 +53,11 @@ class StretchEnergy : public QuadraticTerm {
  public:
   /// @param graph  edge graph of the tet mesh
   /// @param masses vertex masses (positive, scaled here to mean 1); empty: every vertex 1 (paper)
-  /// @throws UsageError if masses has the wrong size or a mass is not positive and finite
+  /// @param regions the local spread's regions; count 0: none (the paper's spread)
+  /// @throws UsageError if masses has the wrong size or a mass is not positive and
+  ///         finite, or a region weight names a vertex or region out of range
   StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weight,
-                Eigen::VectorXd masses = Eigen::VectorXd());
+                Eigen::VectorXd masses = Eigen::VectorXd(), SpreadRegions regions = {});
   std::string name() const override { return "stretch"; }
   double add_residuals(const Eigen::MatrixX3d& Q, const Rotations& R,
                        ResidualSum* sum) const override;
@@ -52,14 +65,18 @@ class StretchEnergy : public QuadraticTerm {
   /// triplets where the derived form has n + 4m, docs/performance.md); with
   /// masses 2 (sum_j m_i m_j - M m_i) and -2 m_i m_j.
   void add_hessian(double scale, std::vector<Eigen::Triplet<double>>* H) const override;
-  /// sqrt(2) m with masses; empty without (2 1 1^T vanishes on zero-mean Q).
+  /// sqrt(2 (1 - t)) m with masses; empty without (1 1^T vanishes on zero-mean Q).
   Eigen::VectorXd rank_one_hessian() const override;
+  /// Columns sqrt(2 M t / M_k) a_k, one per region (n x 0 without regions).
+  Eigen::MatrixXd region_hessian() const override;
   /// Vertex i's mass (at mean 1); 1 without masses.
   double mass(int i) const { return masses_.size() ? masses_[i] : 1.0; }
 
  private:
   std::shared_ptr<const EdgeGraph> graph_;
   Eigen::VectorXd masses_;
+  SpreadRegions regions_;
+  Eigen::VectorXd region_mass_;  ///< M_k = sum_i m_i w_ik
 };
 
 }  // namespace unfold

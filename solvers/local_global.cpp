@@ -89,6 +89,8 @@ void local_global_set_beta(double beta, LocalGlobalData* data) {
     throw NumericalError(what.str());
   }
   data->negative_pivots = data->ldlt.negative_pivots();
+  woodbury_precomputation(data->ldlt, data->part.U_regions, &data->regions);
+  data->negative_pivots -= data->regions.negative_eigenvalues;
 }
 
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q) {
@@ -110,6 +112,7 @@ void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX
     return;
   }
   data.ldlt.solve(data.rhs, Q);
+  woodbury_solve(data.regions, Q);
   // Every B_t sums to zero, so Q has zero mean up to roundoff; remove that too.
   Q->rowwise() -= Q->colwise().mean();
 }

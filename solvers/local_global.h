@@ -27,6 +27,7 @@
 #include "solvers/smoothed_aggregation.h"
 #include "solvers/sparse_ldlt.h"
 #include "solvers/unfold_problem.h"
+#include "solvers/woodbury_update.h"
 
 namespace unfold {
 
@@ -66,8 +67,9 @@ struct LocalGlobalData {
   double c_free = 0;              ///< c_fixed + beta c_beta
   std::vector<const QuadraticTerm*> rotation_terms;  ///< the terms whose B and c depend on R
   bool iterative = false;                            ///< CG with `amg`, else `ldlt`
-  int negative_pivots = 0;                ///< direct: inertia of A, 1 iff the energy is bounded
-  SparseLdlt ldlt;                        ///< direct: analyzed once, factorized per beta
+  int negative_pivots = 0;  ///< direct: inertia of A (+ U_regions U_regions^T), 1 iff bounded
+  SparseLdlt ldlt;          ///< direct: analyzed once, factorized per beta
+  WoodburyUpdate regions;   ///< direct: the stretch term's region centroids
   std::shared_ptr<const AmgData> amg;     ///< iterative: AMG hierarchy of A_beta, built once
   CgOptions cg;                           ///< iterative: tolerance and iteration limit
   mutable CgStats cg_stats;               ///< iterative: what the global steps did

@@ -9,6 +9,7 @@
 #include "energies/quadratic_term.h"
 #include "energies/rotation_term.h"
 #include "solvers/sparse_ldlt.h"
+#include "solvers/woodbury_update.h"
 
 namespace unfold {
 namespace {
@@ -47,6 +48,7 @@ QuadraticPart assemble_quadratic_part(const UnfoldProblem& problem) {
   part.B_fixed.setZero(n, 3);
   part.B_beta.setZero(n, 3);
   part.U_fixed.resize(n, 0);
+  part.U_regions.resize(n, 0);
   const Rotations identity(size_t(n), Eigen::Matrix3d::Identity());  // unused: no R dependence
   for (const auto& term : problem.terms) {
     const auto* quadratic = dynamic_cast<const QuadraticTerm*>(term.get());
@@ -58,6 +60,16 @@ QuadraticPart assemble_quadratic_part(const UnfoldProblem& problem) {
                          "' scales with beta and has a rank-one Hessian part: not supported");
       part.U_fixed.conservativeResize(n, part.U_fixed.cols() + 1);
       part.U_fixed.rightCols<1>() = std::sqrt(term->weight(1.0)) * u;
+    }
+    const Eigen::MatrixXd U = quadratic->region_hessian();
+    if (U.cols() > 0) {
+      if (term->scales_with_beta())
+        throw UsageError("term '" + term->name() +
+                         "' scales with beta and has a low-rank Hessian part: not supported");
+      for (Eigen::MatrixXd* all : {&part.U_regions, &part.U_fixed}) {
+        all->conservativeResize(n, all->cols() + U.cols());
+        all->rightCols(U.cols()) = std::sqrt(term->weight(1.0)) * U;
+      }
     }
     if (dynamic_cast<const RotationTerm*>(term.get())) continue;
     const bool scaled = term->scales_with_beta();
@@ -79,7 +91,9 @@ bool quadratic_part_bounded(const UnfoldProblem& problem, double beta) {
     what << "factorizing the global matrix failed at beta = " << beta << ": " << e.what();
     throw NumericalError(what.str());
   }
-  return ldlt.negative_pivots() <= 1;
+  WoodburyUpdate regions;
+  woodbury_precomputation(ldlt, part.U_regions, &regions);
+  return ldlt.negative_pivots() - regions.negative_eigenvalues <= 1;
 }
 
 }  // namespace unfold

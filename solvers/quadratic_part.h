@@ -28,6 +28,10 @@ struct QuadraticPart {
   /// columns sqrt(w_t) u_t of the terms' rank_one_hessian(): the true A_fixed is
   /// A_fixed + U U^T (n x 0 when no term has one)
   Eigen::MatrixXd U_fixed;
+  /// columns sqrt(w_t) of the terms' region_hessian(), also in U_fixed: the
+  /// direct global step adds them by Woodbury's identity (the rank-one parts it
+  /// needs not add)
+  Eigen::MatrixXd U_regions;
 };
 
 /// A_fixed and A_beta on one pattern (the union of all terms', explicit zeros

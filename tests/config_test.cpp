@@ -45,6 +45,17 @@ TEST(Config, FastIsTheDefaultWithACoarseSolveAndAPosePull) {
   EXPECT_EQ(options_to_yaml(fast), options_to_yaml(expected));
 }
 
+// configs/splayed.yaml is the default with the local spread and a mass power.
+TEST(Config, SplayedIsTheDefaultWithALocalSpread) {
+  const Options splayed = load_options(UNFOLD_SOURCE_DIR "/configs/splayed.yaml");
+  Options expected;
+  expected.energy.stretch_mass_power = 0.35;
+  expected.energy.stretch_local = 0.8;
+  expected.energy.stretch_local_radius = 0.3;
+  expected.energy.stretch_local_regions = 32;
+  EXPECT_EQ(options_to_yaml(splayed), options_to_yaml(expected));
+}
+
 // base: paper starts a config from the paper's parameters: paper.yaml lists
 // them all and equals paper_options(); a config of one key over base: paper
 // differs from it in that key alone.
@@ -121,6 +132,11 @@ TEST(Config, ErrorsNameTheKey) {
   expect_usage_error("stretch:\n  mass_power: .nan\n", "'stretch.mass_power' must be a number in");
   expect_usage_error("stretch:\n  masses: uniform\n  mass_power: 0.5\n",
                      "'stretch.mass_power' is not 1, but stretch.masses is uniform");
+  expect_usage_error("stretch:\n  local: 1\n", "'stretch.local' must be a number in [0, 1)");
+  expect_usage_error("stretch:\n  local: .nan\n", "'stretch.local' must be a number in");
+  expect_usage_error("stretch:\n  local_radius: 0\n", "'stretch.local_radius' must be a finite");
+  expect_usage_error("stretch:\n  local_regions: 0\n",
+                     "'stretch.local_regions' must be at least 1");
   expect_usage_error("cascade: [1, 2\n", "invalid YAML");
   expect_usage_error("- 1\n- 2\n", "not a mapping");
   // The surface domain has no tets: no cotangent weights, no volumes.

@@ -62,6 +62,11 @@ const std::vector<TermCase>& quadratic_cases() {
        [](const EnergySetup& s) {
          return std::make_unique<StretchEnergy>(s.graph, 1.0, lumped_masses(s.mesh.V, s.mesh.T));
        }},
+      {"stretch_local",
+       [](const EnergySetup& s) {
+         return std::make_unique<StretchEnergy>(s.graph, 1.0, lumped_masses(s.mesh.V, s.mesh.T),
+                                                spread_regions(s.mesh.V, *s.graph, {0.6, 0.4, 4}));
+       }},
       {"arap_uniform",
        [](const EnergySetup& s) {
          return std::make_unique<ArapEnergy>(s.graph, s.mesh.V, s.uniform(), 1.0);
@@ -144,11 +149,13 @@ class QuadraticTermCase : public ::testing::TestWithParam<TermCase> {
     term.add_linear(R, 1.0, &B);
     return B;
   }
-  // The true Hessian's product: H plus the term's rank-one part.
+  // The true Hessian's product: H plus the term's rank-one and region parts.
   Eigen::MatrixX3d true_H_times(const Eigen::MatrixX3d& Q) const {
     Eigen::MatrixX3d HQ = H() * Q;
     const Eigen::VectorXd u = term.rank_one_hessian();
     if (u.size()) HQ += u * (u.transpose() * Q);
+    const Eigen::MatrixXd U = term.region_hessian();
+    if (U.cols()) HQ += U * (U.transpose() * Q);
     return HQ;
   }
 };

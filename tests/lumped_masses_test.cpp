@@ -189,26 +189,7 @@ TEST(LumpedStretch, BoundIsTheGeneralizedFiedlerValue) {
 TEST(LumpedStretch, BothSolversReachTheGlobalStepsMinimiser) {
   const LumpedFixture f(graded_grid(16, 5, 5));
   const double beta = 1.5 * f.n / f.lambda2;
-  Eigen::MatrixX3d bent = f.mesh.V;
-  for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.1 * bent(i, 0) * bent(i, 0);
-  Rotations R;
-  best_rotations(*f.graph, f.mesh.V, bent, &R);
-  Eigen::MatrixX3d grad_at_bent;
-  total_energy(f.problem, bent, R, beta, &grad_at_bent);
-  for (const char* method : {"direct", "iterative"}) {
-    LinearSolverOptions solver{method};
-    solver.cg_tolerance = 1e-12;
-    solver.cg_forcing = 0;
-    LocalGlobalData data;
-    local_global_precomputation(f.problem, &data, solver);
-    local_global_set_beta(beta, &data);
-    Eigen::MatrixX3d Q = bent.rowwise() - bent.colwise().mean();
-    global_step(data, R, &Q);
-    Eigen::MatrixX3d grad;
-    const double energy = total_energy(f.problem, Q, R, beta, &grad);
-    EXPECT_LT(grad.norm(), 1e-8 * grad_at_bent.norm()) << method;
-    EXPECT_NEAR(energy_after_global_step(data, R, Q), energy, 1e-9 * std::abs(energy)) << method;
-  }
+  test::expect_global_steps_reach_the_minimiser(f, beta);
   CascadeOptions options;
   options.beta = beta;
   const auto cascade = [&](const char* method) {

@@ -7,8 +7,10 @@
 #include <memory>
 
 #include "energies/energy_terms.h"
+#include "mesh/best_rotations.h"
 #include "solvers/cascade.h"
 #include "solvers/fiedler_value.h"
+#include "solvers/local_global.h"
 #include "solvers/unfold_problem.h"
 #include "test_meshes.h"
 
@@ -38,6 +40,34 @@ inline void expect_energy_non_increasing_within_cascades(const CascadeResult& re
     EXPECT_LE(result.history[k].energy,
               result.history[k - 1].energy + 1e-9 * std::abs(result.history[k - 1].energy))
         << "iteration " << result.history[k].iteration;
+  }
+}
+
+/// From the rotations of a bent pose of f's mesh, one global step of each
+/// linear solver (direct, and CG to 1e-12) zeroes the energy's gradient at
+/// those rotations, and energy_after_global_step is the energy there: each
+/// solves the step's whole system, its low-rank parts included.
+inline void expect_global_steps_reach_the_minimiser(const ProblemFixture& f, double beta) {
+  Eigen::MatrixX3d bent = f.mesh.V;
+  for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.1 * bent(i, 0) * bent(i, 0);
+  Rotations R;
+  best_rotations(*f.graph, f.mesh.V, bent, &R);
+  Eigen::MatrixX3d grad_at_bent;
+  total_energy(f.problem, bent, R, beta, &grad_at_bent);
+  for (const char* method : {"direct", "iterative"}) {
+    LinearSolverOptions solver{method};
+    solver.cg_tolerance = 1e-12;
+    solver.cg_forcing = 0;
+    LocalGlobalData data;
+    local_global_precomputation(f.problem, &data, solver);
+    local_global_set_beta(beta, &data);
+    EXPECT_TRUE(energy_bounded(data)) << method;
+    Eigen::MatrixX3d Q = bent.rowwise() - bent.colwise().mean();
+    global_step(data, R, &Q);
+    Eigen::MatrixX3d grad;
+    const double energy = total_energy(f.problem, Q, R, beta, &grad);
+    EXPECT_LT(grad.norm(), 1e-8 * grad_at_bent.norm()) << method;
+    EXPECT_NEAR(energy_after_global_step(data, R, Q), energy, 1e-9 * std::abs(energy)) << method;
   }
 }
 
