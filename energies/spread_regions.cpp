@@ -21,6 +21,7 @@ SpreadRegions spread_regions(const Eigen::MatrixX3d& V, const EdgeGraph& graph,
     throw UsageError("config key 'stretch.local_radius' must be a finite number > 0");
   if (!(options.local >= 0 && options.local < 1))
     throw UsageError("config key 'stretch.local' must be a number in [0, 1)");
+  if (n == 0) return {};
   const int count = std::min(options.count, n);
   const NeighborLengths lengths = neighbor_lengths(graph, V);
   // Farthest-point sampling: an unreached vertex is infinitely far, so every

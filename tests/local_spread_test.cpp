@@ -84,6 +84,13 @@ TEST(SpreadRegions, FollowTheSurfaceNotSpace) {
   EXPECT_GT(W.row(0).dot(W.row(1)), 0.1);  // neighbours along the strip share
 }
 
+TEST(SpreadRegions, AnEmptyGraphHasNone) {
+  const SpreadRegions r =
+      spread_regions(Eigen::MatrixX3d(0, 3), build_edge_graph(0, Eigen::MatrixXi(0, 3)), {});
+  EXPECT_EQ(r.count, 0);
+  EXPECT_TRUE(r.weights.empty());
+}
+
 TEST(SpreadRegions, BadOptionsNameTheirKey) {
   const Grid g;
   const auto expect_error = [&](const SpreadRegionsOptions& o, const std::string& key) {
