@@ -24,14 +24,14 @@
 namespace unfold {
 namespace {
 
-struct Grid {
+struct RegionGrid {
   TetMesh mesh = test::grid_tet_mesh(8, 3, 3);
   EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
   int n = int(mesh.V.rows());
 };
 
 TEST(SpreadRegions, AreAPartitionOfUnityEachPeakingSomewhere) {
-  const Grid g;
+  const RegionGrid g;
   const SpreadRegions r = spread_regions(g.mesh.V, g.graph, {0.5, 0.2, 6});
   ASSERT_EQ(r.count, 6);
   EXPECT_EQ(r.local, 0.5);
@@ -92,7 +92,7 @@ TEST(SpreadRegions, AnEmptyGraphHasNone) {
 }
 
 TEST(SpreadRegions, BadOptionsNameTheirKey) {
-  const Grid g;
+  const RegionGrid g;
   const auto expect_error = [&](const SpreadRegionsOptions& o, const std::string& key) {
     try {
       spread_regions(g.mesh.V, g.graph, o);
@@ -109,7 +109,7 @@ TEST(SpreadRegions, BadOptionsNameTheirKey) {
 // -2M [(1 - t) sum_i m_i |q_i - c|^2 + t sum_k sum_i m_i w_ik |q_i - c_k|^2]
 // + 2 sum_edges m_a m_b |q_a - q_b|^2, summed here directly.
 TEST(LocalSpread, IsTheMixOfTheCentroidAndRegionSpreads) {
-  const Grid g;
+  const RegionGrid g;
   const auto graph = std::make_shared<const EdgeGraph>(g.graph);
   const double t = 0.7;
   const SpreadRegions r = spread_regions(g.mesh.V, g.graph, {t, 0.25, 5});
