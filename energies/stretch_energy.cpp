@@ -28,6 +28,8 @@ StretchEnergy::StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weig
       throw UsageError("stretch term: a region weight names a vertex or region out of range");
     region_mass_[t.col()] += mass(t.row()) * t.value();
   }
+  weights_.resize(graph_->num_vertices, regions_.count);
+  weights_.setFromTriplets(regions_.weights.begin(), regions_.weights.end());
 }
 
 double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& /*R*/,
@@ -37,17 +39,29 @@ double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& 
                                              : Eigen::Vector3d(Q.colwise().mean().transpose()));
   double energy = 0;
   const double local = regions_.local;
-  for (int i = 0; i < n; ++i)
-    energy += sum->add<3, 1>(spread, {i}, -2.0 * n * (1.0 - local) * mass(i));
-  if (local > 0) {
-    // Each region's centroid, held fixed like c_m above.
-    Eigen::MatrixX3d c = Eigen::MatrixX3d::Zero(regions_.count, 3);
-    for (const auto& t : regions_.weights)
-      c.row(t.col()) += mass(t.row()) * t.value() * Q.row(t.row());
-    for (int k = 0; k < regions_.count; ++k) c.row(k) /= region_mass_[k];
-    for (const auto& t : regions_.weights)
-      energy += sum->add<3, 1>(SpreadResidual(c.row(t.col()).transpose()), {int(t.row())},
-                               -2.0 * n * local * mass(t.row()) * t.value());
+  if (local == 0) {
+    for (int i = 0; i < n; ++i) energy += sum->add<3, 1>(spread, {i}, -2.0 * n * mass(i));
+  } else {
+    // Each vertex's spread about its centres (c_m with weight 1 - t, c_k with
+    // t w_ik) is its spread about their mean a_i plus their own spread about
+    // a_i: one residual q_i - a_i a vertex (the same gradient and quadratic
+    // form as one a centre, since every centroid is stationary) and a
+    // constant. With chat = W c, sum_k w_ik |c_k - a_i|^2 = sum_k w_ik |c_k|^2
+    // - 2 a_i . chat_i + |a_i|^2, and sum_i m_i sum_k w_ik |c_k|^2 = sum_k M_k |c_k|^2.
+    Eigen::MatrixX3d mQ = masses_.size() ? Eigen::MatrixX3d(masses_.asDiagonal() * Q) : Q;
+    Eigen::MatrixX3d c = weights_.transpose() * mQ;
+    c.array().colwise() /= region_mass_.array();
+    const Eigen::MatrixX3d chat = weights_ * c;
+    const Eigen::RowVector3d cm = spread.c.transpose();
+    double offset = local * (region_mass_.transpose() * c.rowwise().squaredNorm()).value();
+    for (int i = 0; i < n; ++i) {
+      const Eigen::RowVector3d a = (1.0 - local) * cm + local * chat.row(i);
+      const double own = (1.0 - local) * (cm - a).squaredNorm() +
+                         local * (a.squaredNorm() - 2.0 * a.dot(chat.row(i)));
+      offset += mass(i) * own;
+      energy += sum->add<3, 1>(SpreadResidual(a.transpose()), {i}, -2.0 * n * mass(i));
+    }
+    energy -= 2.0 * n * offset;
   }
   const DifferenceResidual edge;
   for (int e = 0; e < graph_->num_edges(); ++e) {
@@ -80,11 +94,9 @@ Eigen::VectorXd StretchEnergy::rank_one_hessian() const {
 Eigen::MatrixXd StretchEnergy::region_hessian() const {
   const int n = graph_->num_vertices;
   if (regions_.local == 0) return Eigen::MatrixXd(n, 0);
-  Eigen::MatrixXd U = Eigen::MatrixXd::Zero(n, regions_.count);
-  for (const auto& t : regions_.weights)
-    U(t.row(), t.col()) =
-        std::sqrt(2.0 * n * regions_.local / region_mass_[t.col()]) * mass(t.row()) * t.value();
-  return U;
+  Eigen::MatrixXd U = weights_;
+  if (masses_.size()) U = masses_.asDiagonal() * U;
+  return U * (2.0 * n * regions_.local * region_mass_.cwiseInverse()).cwiseSqrt().asDiagonal();
 }
 
 }  // namespace unfold

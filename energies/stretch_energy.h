@@ -27,6 +27,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <memory>
 
 #include "energies/quadratic_term.h"
@@ -76,7 +77,8 @@ class StretchEnergy : public QuadraticTerm {
   std::shared_ptr<const EdgeGraph> graph_;
   Eigen::VectorXd masses_;
   SpreadRegions regions_;
-  Eigen::VectorXd region_mass_;  ///< M_k = sum_i m_i w_ik
+  Eigen::SparseMatrix<double, Eigen::RowMajor> weights_;  ///< W (n x regions): w_ik
+  Eigen::VectorXd region_mass_;                           ///< M_k = sum_i m_i w_ik
 };
 
 }  // namespace unfold
