@@ -23,7 +23,8 @@
 // the energy is bounded wherever t = 0's is, and H's sparse part is unchanged:
 // the centroids add 2M t sum_k a_k a_k^T / M_k (a_ik = m_i w_ik), whose columns
 // region_hessian() returns (the direct global step adds them by Woodbury's
-// identity, docs/method.md).
+// identity, docs/method.md). add_residuals evaluates it in closed form, one
+// residual a vertex, not one per vertex and region.
 #pragma once
 
 #include <Eigen/Core>
