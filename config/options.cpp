@@ -157,10 +157,6 @@ void require(bool ok, const std::string& key, const std::string& what) {
 // the run builds its problem, where make_backend checks the terms again.
 EnergyTerms probe_terms(EnergyOptions options) {
   options.user_pairs_file.clear();
-  // The local spread's regions change no capability, and their geodesics run
-  // an OpenMP loop: in unfold_batch's parent that left its forked children's
-  // OpenMP teams waiting for threads that were not forked with them.
-  options.stretch_local = 0;
   TetMesh tet;
   tet.V = (Eigen::MatrixX3d(4, 3) << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1).finished();
   tet.T = (Eigen::MatrixX4i(1, 4) << 0, 1, 2, 3).finished();

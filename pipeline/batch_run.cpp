@@ -417,6 +417,16 @@ std::vector<std::string> list_meshes(const std::string& dir) {
 }
 
 std::vector<BatchRow> run_batch(const BatchOptions& o) {
+  // Until the last shape is forked the parent runs OpenMP on one thread: a team
+  // it started (a config probe's loop, say) would be copied into each child
+  // without its threads, and the child's next parallel region would wait for
+  // them forever (libgomp is not fork-safe). The children set their own count.
+  struct SerialUntilForked {
+    int threads = omp_get_max_threads();
+    SerialUntilForked() { omp_set_num_threads(1); }
+    ~SerialUntilForked() { restore(); }
+    void restore() const { omp_set_num_threads(threads); }
+  } serial;
   if (o.jobs < 1) throw UsageError("--jobs must be at least 1");
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     throw UsageError("the shard must be i/N with 0 <= i < N");
@@ -523,6 +533,7 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
                        : "no result");
     progress.print_line(line.str(), stdout);
   }
+  serial.restore();  // the tables below may use every core
   progress.finish();
 
   std::vector<BatchRow> rows;
