@@ -4,7 +4,8 @@
 // same tables as one run straight through, and runs again only the configs
 // whose results are missing; --threads is checked, and a shape
 // below kMinParallelRows gives the same files on one thread as on two (what
-// scripts/slurm/submit's one thread a shape relies on, docs/reliability.md).
+// scripts/slurm/submit's one thread a shape relies on, docs/reliability.md);
+// a shape's process runs parallel regions after the parent ran one.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -183,6 +185,31 @@ TEST(BatchMatrix, ThreadsIsCheckedAndASmallShapeDoesNotDependOnIt) {
         0);
   EXPECT_EQ(test::file_text(dir.file("1") + "/default/demo.off"),
             test::file_text(dir.file("2") + "/default/demo.off"));
+}
+
+// The parent's config probe builds the local spread's regions, whose edge
+// lengths are taken in a parallel region. A team left in the parent was copied
+// into every forked child without its threads (libgomp is not fork-safe), and
+// the child's first parallel region waited for them forever: the run must end.
+TEST(BatchMatrix, AShapesProcessRunsParallelRegionsAfterTheParentRanOne) {
+  const test::TempDir dir;
+  const std::string in = dir.file("in"), config = dir.file("local_spread.yaml");
+  fs::create_directories(in);
+  fs::copy_file(test::matrix_input(test::kDemo), in + "/demo.ply");
+  test::write_bytes(config, "base: default\nstretch:\n  local: 0.5\n");
+  // Two threads in the parent and in the child whatever the machine; the
+  // whole process group killed if it hangs.
+  const std::string command = "OMP_NUM_THREADS=2 timeout -s KILL 120 " +
+                              std::string(UNFOLD_BIN_DIR) + "/unfold_batch --input_dir " + in +
+                              " --output_dir " + dir.file("out") + " --configs " + config +
+                              " --metrics none --retrieval_points 100 " + kCheapCmbof +
+                              " --jobs 1 --threads 2 >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "137: killed after 120 s, the shape's process hung";
+  const std::vector<BatchRow> rows = read_results_csv(dir.file("out") + "/results.csv");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].status, "ok");
 }
 
 }  // namespace
