@@ -13,7 +13,7 @@ StretchEnergy::StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weig
     : QuadraticTerm(graph->num_vertices, weight, false),
       graph_(std::move(graph)),
       masses_(std::move(masses)),
-      regions_(std::move(regions)) {
+      local_(regions.local) {
   if (masses_.size() > 0) {
     if (masses_.size() != graph_->num_vertices)
       throw UsageError("stretch term: " + std::to_string(masses_.size()) + " masses for " +
@@ -22,14 +22,14 @@ StretchEnergy::StretchEnergy(std::shared_ptr<const EdgeGraph> graph, double weig
       throw UsageError("stretch term: every vertex mass must be positive and finite");
     masses_ *= double(masses_.size()) / masses_.sum();
   }
-  region_mass_.setZero(regions_.count);
-  for (const auto& t : regions_.weights) {
-    if (t.row() < 0 || t.row() >= graph_->num_vertices || t.col() < 0 || t.col() >= regions_.count)
+  region_mass_.setZero(regions.count);
+  for (const auto& t : regions.weights) {
+    if (t.row() < 0 || t.row() >= graph_->num_vertices || t.col() < 0 || t.col() >= regions.count)
       throw UsageError("stretch term: a region weight names a vertex or region out of range");
     region_mass_[t.col()] += mass(t.row()) * t.value();
   }
-  weights_.resize(graph_->num_vertices, regions_.count);
-  weights_.setFromTriplets(regions_.weights.begin(), regions_.weights.end());
+  weights_.resize(graph_->num_vertices, regions.count);
+  weights_.setFromTriplets(regions.weights.begin(), regions.weights.end());
 }
 
 double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& /*R*/,
@@ -38,8 +38,7 @@ double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& 
   const SpreadResidual spread(masses_.size() ? (masses_.transpose() * Q).transpose() / n
                                              : Eigen::Vector3d(Q.colwise().mean().transpose()));
   double energy = 0;
-  const double local = regions_.local;
-  if (local == 0) {
+  if (local_ == 0) {
     for (int i = 0; i < n; ++i) energy += sum->add<3, 1>(spread, {i}, -2.0 * n * mass(i));
   } else {
     // Each vertex's spread about its centres (c_m with weight 1 - t, c_k with
@@ -53,11 +52,11 @@ double StretchEnergy::add_residuals(const Eigen::MatrixX3d& Q, const Rotations& 
     c.array().colwise() /= region_mass_.array();
     const Eigen::MatrixX3d chat = weights_ * c;
     const Eigen::RowVector3d cm = spread.c.transpose();
-    double offset = local * (region_mass_.transpose() * c.rowwise().squaredNorm()).value();
+    double offset = local_ * (region_mass_.transpose() * c.rowwise().squaredNorm()).value();
     for (int i = 0; i < n; ++i) {
-      const Eigen::RowVector3d a = (1.0 - local) * cm + local * chat.row(i);
-      const double own = (1.0 - local) * (cm - a).squaredNorm() +
-                         local * (a.squaredNorm() - 2.0 * a.dot(chat.row(i)));
+      const Eigen::RowVector3d a = (1.0 - local_) * cm + local_ * chat.row(i);
+      const double own = (1.0 - local_) * (cm - a).squaredNorm() +
+                         local_ * (a.squaredNorm() - 2.0 * a.dot(chat.row(i)));
       offset += mass(i) * own;
       energy += sum->add<3, 1>(SpreadResidual(a.transpose()), {i}, -2.0 * n * mass(i));
     }
@@ -87,16 +86,16 @@ void StretchEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>
 }
 
 Eigen::VectorXd StretchEnergy::rank_one_hessian() const {
-  return masses_.size() ? Eigen::VectorXd(std::sqrt(2.0 * (1.0 - regions_.local)) * masses_)
+  return masses_.size() ? Eigen::VectorXd(std::sqrt(2.0 * (1.0 - local_)) * masses_)
                         : Eigen::VectorXd();
 }
 
 Eigen::MatrixXd StretchEnergy::region_hessian() const {
   const int n = graph_->num_vertices;
-  if (regions_.local == 0) return Eigen::MatrixXd(n, 0);
+  if (local_ == 0) return Eigen::MatrixXd(n, 0);
   Eigen::MatrixXd U = weights_;
   if (masses_.size()) U = masses_.asDiagonal() * U;
-  return U * (2.0 * n * regions_.local * region_mass_.cwiseInverse()).cwiseSqrt().asDiagonal();
+  return U * (2.0 * n * local_ * region_mass_.cwiseInverse()).cwiseSqrt().asDiagonal();
 }
 
 }  // namespace unfold

@@ -77,7 +77,7 @@ class StretchEnergy : public QuadraticTerm {
  private:
   std::shared_ptr<const EdgeGraph> graph_;
   Eigen::VectorXd masses_;
-  SpreadRegions regions_;
+  double local_;                                          ///< the share t in the regions
   Eigen::SparseMatrix<double, Eigen::RowMajor> weights_;  ///< W (n x regions): w_ik
   Eigen::VectorXd region_mass_;                           ///< M_k = sum_i m_i w_ik
 };
