@@ -29,6 +29,9 @@
     "its interior back into the input (unfolded: parts touching in the input stay apart); auto: "  \
     "unfolded wherever there is a surface solve and the route is not conforming, else input; "     \
     "contact: unfolded where the input's tets bridge a contact, else input")                       \
+  X(unfolded_min_quality, "tetrahedralize.unfolded_min_quality", tet.unfolded_min_quality,         \
+    "the unfolded shape's tets: those flatter than this (6 sqrt(2) volume / rms edge^3, 1 for a "  \
+    "regular tet) put back into the input are dropped like inverted ones; 0: only inverted")       \
   X(contact_geodesic, "tetrahedralize.contact_geodesic", contact_geodesic,                         \
     "shape contact: a tet edge bridges a contact when its ends are farther apart along the "       \
     "surface than this times sqrt(area) and 4 times their distance (docs/method.md, contact)")     \

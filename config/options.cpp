@@ -271,6 +271,8 @@ void validate_options(const Options& o) {
       o.tet_shape != "unfolded" || solves_surface_first(o), "tetrahedralize.shape",
       "unfolded needs domain: surface (the surface solve it tetrahedralizes) and a method other "
       "than lsmds and scf (auto and contact fall back to the input's tets there)");
+  require(o.tet.unfolded_min_quality >= 0 && o.tet.unfolded_min_quality < 1,
+          "tetrahedralize.unfolded_min_quality", "must be in [0, 1) (0: drop only inverted tets)");
   require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
           "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");

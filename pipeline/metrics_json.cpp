@@ -72,6 +72,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                   {"fallback", r.tet_report.fallback},
                   {"shape", r.tet_report.shape},
                   {"dropped_inverted_tets", r.tet_report.dropped_inverted_tets},
+                  {"dropped_flat_tets", r.tet_report.dropped_flat_tets},
                   {"inverted_rest_tets", r.tet_report.inverted_rest_tets},
                   {"contact_face_pairs", r.tet_report.contact_face_pairs},
                   {"contact_bridge", r.tet_report.contact_bridge},

@@ -81,10 +81,17 @@ UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::M
   // 0.29 -> 0.22 (docs/method.md, contact).
   // When the solve joins the surface's edges, no inverted tet is kept only to
   // join surface vertices: what it would hold them by has no rest shape.
+  // Slivers of the robust route's Delaunay, and tets flattened when put back,
+  // have no rest shape either: a small turn of a corner flips them
+  // (options.unfolded_min_quality; docs/method.md, detail).
   const Eigen::MatrixXi surface_edges = Eigen::MatrixXi(F);
-  out.report.dropped_inverted_tets =
-      drop_inverted_tets(tets.V, X, &tets.T, surface_edges_join ? &surface_edges : nullptr);
+  const int inverted = count_inverted_tets(tets.V, X, tets.T);
+  const int dropped =
+      drop_inverted_tets(tets.V, X, &tets.T, surface_edges_join ? &surface_edges : nullptr,
+                         options.unfolded_min_quality);
   out.report.inverted_rest_tets = count_inverted_tets(tets.V, X, tets.T);
+  out.report.dropped_inverted_tets = inverted - out.report.inverted_rest_tets;
+  out.report.dropped_flat_tets = dropped - out.report.dropped_inverted_tets;
   out.report.num_tets = int(tets.T.rows());
   out.unfolded = std::move(tets.V);
   out.rest = std::move(tets);

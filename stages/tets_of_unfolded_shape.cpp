@@ -19,8 +19,9 @@ UnfoldedShapeTets tets_of_unfolded_shape(const SurfaceMesh& surface, const Eigen
   out.unfolded = std::move(unfolded.unfolded);
   LOG(INFO) << "tetrahedralized the unfolded shape (" << out.report.route
             << "): " << out.rest.V.rows() << " vertices, " << out.rest.T.rows() << " tets; "
-            << out.report.dropped_inverted_tets << " inverted at rest dropped, "
-            << out.report.inverted_rest_tets << " kept to keep it connected";
+            << out.report.dropped_inverted_tets << " inverted and " << out.report.dropped_flat_tets
+            << " flat at rest dropped, " << out.report.inverted_rest_tets
+            << " kept to keep it connected";
   return out;
 }
 

@@ -1,13 +1,16 @@
-// Tets inverted at their rest positions are dropped, but never those the
-// mesh needs to stay connected.
+// Tets inverted (or, with a quality bound, flat) at their rest positions are
+// dropped, but never those the mesh needs to stay connected.
 #include "mesh/drop_inverted_tets.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "core/errors.h"
 #include "core/union_find.h"
+#include "mesh/tet_quality.h"
 #include "mesh/tet_volumes.h"
 #include "test_meshes.h"
 
@@ -87,12 +90,55 @@ TEST(DropInvertedTets, DropsOnlyInvertedTetsAndKeepsTheParts) {
   }
 }
 
+// A grid's middle layer pressed almost onto the one below: the tets between
+// them are upright but flat. With a quality bound they are dropped but for
+// a few the parts need, and no tet of good shape is; without one, none is
+// dropped.
+TEST(DropInvertedTets, DropsFlatTetsWithAQualityBound) {
+  const TetMesh grid = test::grid_tet_mesh(4, 4, 2);
+  Eigen::MatrixX3d pressed = grid.V;
+  const double low = grid.V.col(2).minCoeff(), high = grid.V.col(2).maxCoeff();
+  const double middle = (low + high) / 2;
+  for (Eigen::Index i = 0; i < pressed.rows(); ++i)
+    if (std::abs(grid.V(i, 2) - middle) < 1e-9) pressed(i, 2) = low + 0.01 * (middle - low);
+  Eigen::MatrixX4i T = grid.T;
+  EXPECT_EQ(drop_inverted_tets(grid.V, pressed, &T, nullptr, 0.0), 0);
+  const double bound = 0.1;
+  const Eigen::VectorXd q = tet_quality(pressed, grid.T);
+  int flat = 0;
+  for (Eigen::Index t = 0; t < q.size(); ++t) flat += q[t] < bound;
+  ASSERT_GT(flat, 0);
+  ASSERT_LT(flat, grid.T.rows());
+  T = grid.T;
+  const int dropped = drop_inverted_tets(grid.V, pressed, &T, nullptr, bound);
+  EXPECT_GT(dropped, 0);
+  EXPECT_LE(dropped, flat);
+  EXPECT_EQ(T.rows() + dropped, grid.T.rows());
+  const int n = int(grid.V.rows());
+  EXPECT_TRUE(same_parts(parts(n, T), parts(n, grid.T)));
+  // Each flat tet put back joins a vertex that no tet of good shape has, so
+  // there are at most as many as such vertices (the bottom layer's).
+  std::vector<char> in_good(size_t(n), 0);
+  for (Eigen::Index t = 0; t < q.size(); ++t)
+    if (q[t] >= bound)
+      for (int k = 0; k < 4; ++k) in_good[size_t(grid.T(t, k))] = 1;
+  const int loose = int(std::count(in_good.begin(), in_good.end(), 0));
+  const Eigen::VectorXd left = tet_quality(pressed, T);
+  const int kept_flat = int((left.array() < bound).count());
+  EXPECT_GT(loose, 0);
+  EXPECT_LE(kept_flat, loose);
+  EXPECT_EQ(kept_flat + dropped, flat);
+}
+
 TEST(DropInvertedTets, RefusesMismatchedPositionsAndCorners) {
   const TetMesh grid = test::grid_tet_mesh(2, 2, 2);
   Eigen::MatrixX4i T = grid.T;
   EXPECT_THROW(drop_inverted_tets(grid.V, grid.V.topRows(3), &T), UsageError);
   T(0, 0) = int(grid.V.rows());
   EXPECT_THROW(drop_inverted_tets(grid.V, grid.V, &T), UsageError);
+  T = grid.T;
+  EXPECT_THROW(drop_inverted_tets(grid.V, grid.V, &T, nullptr, -0.1), UsageError);
+  EXPECT_THROW(drop_inverted_tets(grid.V, grid.V, &T, nullptr, 1.5), UsageError);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "mesh/tet_quality.h"
 #include "mesh/tet_volumes.h"
 #include "shapes/articulated_shape.h"
 #include "test_meshes.h"
@@ -66,6 +67,31 @@ TEST(TetrahedralizeUnfolded, JoinsNoPartsThatOnlyTouchInTheInput) {
   // The report counts the tets left and the inverted ones among them.
   EXPECT_EQ(m.report.num_tets, m.rest.T.rows());
   EXPECT_EQ(count_inverted_tets(m.unfolded, m.rest.V, m.rest.T), m.report.inverted_rest_tets);
+}
+
+// The tets flat in the input are dropped as the inverted ones are, and counted:
+// without the bound the same mesh keeps them; with it, what is left of them
+// is what keeps the mesh connected (a few).
+TEST(TetrahedralizeUnfolded, DropsTetsFlatInTheInput) {
+  const SurfaceMesh crossed = make_articulated_shape(ShapePose::contact(1));
+  const SurfaceMesh apart = make_articulated_shape(ShapePose::rest());
+  TetOptions bounded;
+  bounded.route = "robust";  // the route the pipeline takes for the unfolded shape
+  bounded.unfolded_min_quality = 0.05;
+  TetOptions all = bounded;
+  all.unfolded_min_quality = 0;
+  const UnfoldedTetMesh kept = tetrahedralize_unfolded(crossed, apart.V, all);
+  EXPECT_EQ(kept.report.dropped_flat_tets, 0);
+  const UnfoldedTetMesh m = tetrahedralize_unfolded(crossed, apart.V, bounded);
+  const auto flat = [&](const UnfoldedTetMesh& mesh) {
+    const Eigen::VectorXd q = tet_quality(mesh.rest.V, mesh.rest.T);
+    return int((q.array() < bounded.unfolded_min_quality).count());
+  };
+  ASSERT_GT(flat(kept), 0) << "the demo's tets put back have flat ones";
+  EXPECT_GT(m.report.dropped_flat_tets, 0);
+  EXPECT_EQ(m.report.dropped_inverted_tets, kept.report.dropped_inverted_tets);
+  EXPECT_EQ(m.report.num_tets + m.report.dropped_flat_tets, kept.report.num_tets);
+  EXPECT_LT(flat(m), flat(kept) / 10);
 }
 
 TEST(TetrahedralizeUnfolded, RefusesAnUnfoldedShapeOfAnotherSize) {

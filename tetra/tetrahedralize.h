@@ -28,6 +28,10 @@ struct TetOptions {
   double max_volume = 0;  ///< TetGen -a bound on tet volume (conforming route); 0: no bound
   /// robust route: the interior grid's spacing; 0: three times the surface's mean edge length
   double interior_spacing = 0;
+  /// the unfolded shape's tets (solvers/tetrahedralize_unfolded.h): those whose
+  /// quality (mesh/tet_quality.h) put back into the input is below this are
+  /// dropped like inverted ones; 0: only inverted ones
+  double unfolded_min_quality = 0;
 };
 
 struct TetReport {
@@ -49,6 +53,8 @@ struct TetReport {
   /// unfolded: tets whose orientation at rest (put back into the input) is not
   /// the one they were made with, dropped (mesh/drop_inverted_tets.h)
   int dropped_inverted_tets = 0;
+  /// unfolded: tets upright but flatter than unfolded_min_quality at rest, dropped
+  int dropped_flat_tets = 0;
   /// unfolded: such tets kept, as the mesh needs them to stay connected
   int inverted_rest_tets = 0;
   /// shape contact: the surface's intersecting face pairs that are parts passing
