@@ -40,6 +40,11 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"damaged_surface_edges", m.damage.damaged_edges},
       {"surface_edges_measured", m.damage.edges},
       {"zero_length_surface_edges", m.damage.zero_length_edges},
+      // The fold measure (metrics/surface_folds.h), always computed.
+      {"folded_edges_percent", m.folds.folded_edges_percent},
+      {"folded_surface_edges", m.folds.folded_edges},
+      {"dihedral_change_p999_degrees", m.folds.dihedral_change_p999},
+      {"dihedral_change_max_degrees", m.folds.dihedral_change_max},
       {"final_energy", c.final_energy},
       {"reached_band", c.reached_band},
       {"bounded", c.bounded},

@@ -172,6 +172,8 @@ UnfoldResult unfold_components_separately(const SurfaceMesh& surface, const Opti
   // (one area scale for the whole; per vertex, the merged surface's vertices).
   merged.metrics.damage =
       surface_damage(merged.surface.V, merged.canonical.V, merged.surface.faces);
+  merged.metrics.folds =
+      surface_folds(merged.surface.V, merged.canonical.V, triangulate_faces(merged.surface));
   return merged;
 }
 

@@ -469,6 +469,7 @@ Stage measure() {
             result.unfolded_tet_positions.rows() > 0 ? result.unfolded_tet_positions : P, Q,
             tets.T);
         m.damage = surface_damage(surface.V, result.canonical.V, surface.faces);
+        m.folds = surface_folds(surface.V, result.canonical.V, triangulate_faces(surface));
         result.surface = std::move(s.mesh.surface);
         result.tets = std::move(s.mesh.tets);
         result.tet_report = s.mesh.tet_report;

@@ -10,6 +10,7 @@
 #include "mesh/surface_mesh.h"
 #include "mesh/tet_mesh.h"
 #include "metrics/surface_damage.h"
+#include "metrics/surface_folds.h"
 #include "solvers/cascade.h"
 #include "solvers/local_global.h"
 #include "tetra/tetrahedralize.h"
@@ -31,6 +32,9 @@ struct UnfoldMetrics {
   /// the canonical surface's edges against the input's at its area
   /// (metrics/surface_damage.h): always computed, whatever metrics.compute lists
   SurfaceDamage damage;
+  /// the canonical surface's bends against the input's (metrics/surface_folds.h):
+  /// folds that keep edge lengths, which `damage` cannot see; always computed
+  SurfaceFolds folds;
   double seconds = 0;
   /// E_rig's term of each tet vertex (RigidityError); NaN when E_rig is not computed
   Eigen::VectorXd rigidity_per_vertex;

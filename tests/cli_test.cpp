@@ -69,6 +69,15 @@ TEST(Cli, DemoRunWritesEveryOutput) {
   EXPECT_LE(number("surface_edge_ratio_min"), 1);
   // A closed surface: V + F - 2 unique edges, all measured.
   EXPECT_EQ(number("surface_edges_measured"), double(input.V.rows() + input.faces.size()) - 2);
+  // The fold measure beside it: in range, the largest change at least the p99.9.
+  for (const char* key : {"folded_edges_percent", "folded_surface_edges",
+                          "dihedral_change_p999_degrees", "dihedral_change_max_degrees"})
+    EXPECT_TRUE(std::isfinite(number(key))) << key;
+  EXPECT_GE(number("folded_edges_percent"), 0);
+  EXPECT_LE(number("folded_edges_percent"), 100);
+  EXPECT_GE(number("dihedral_change_max_degrees"), number("dihedral_change_p999_degrees"));
+  EXPECT_LE(number("dihedral_change_max_degrees"), 180);
+  EXPECT_GT(number("dihedral_change_max_degrees"), 0);  // the pose changed: some edge bends
   EXPECT_NE(r.out.find("; damaged surface edges "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("% (ratio outside [1/3, 3]; ratio p99.9 "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" inverted tets\n"), std::string::npos) << r.out;

@@ -1,0 +1,96 @@
+// The fold measure: zero for a similarity of the input, and it sees a fold
+// that keeps every edge length (which the edge-ratio damage measure cannot).
+#include "metrics/surface_folds.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/errors.h"
+#include "metrics/surface_damage.h"
+#include "test_meshes.h"
+
+namespace unfold {
+namespace {
+
+// A flat sheet of nx x ny squares in the z = 0 plane, each split into two
+// triangles; vertex (i, j) is row j * (nx + 1) + i.
+void sheet(int nx, int ny, Eigen::MatrixX3d* V, Eigen::MatrixX3i* F) {
+  V->resize((nx + 1) * (ny + 1), 3);
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) V->row(j * (nx + 1) + i) << i, j, 0;
+  F->resize(2 * nx * ny, 3);
+  int t = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+      F->row(t++) << a, b, d;
+      F->row(t++) << a, d, c;
+    }
+}
+
+TEST(SurfaceFolds, NoneUnderASimilarity) {
+  const SurfaceMesh sphere = test::uv_sphere(12, 16);
+  const Eigen::MatrixX3i F = triangulate_faces(sphere);
+  const Eigen::MatrixX3d moved = (2.5 * sphere.V * test::random_rotation(4).transpose()).rowwise() +
+                                 Eigen::RowVector3d(1, 2, 3);
+  const SurfaceFolds folds = surface_folds(sphere.V, moved, F);
+  EXPECT_GT(folds.edges, 0);
+  EXPECT_EQ(folds.folded_edges, 0);
+  EXPECT_LT(folds.dihedral_change_max, 1e-6);
+  EXPECT_LT(folds.per_vertex.maxCoeff(), 1e-6);
+}
+
+// The sheet folded along its middle column line by 120 degrees: every length is
+// kept, so no edge is damaged, but the edges on the fold line turn by 120
+// degrees and no other edge turns at all.
+TEST(SurfaceFolds, SeesAFoldThatKeepsEveryLength) {
+  const int nx = 6, ny = 5;
+  Eigen::MatrixX3d V;
+  Eigen::MatrixX3i F;
+  sheet(nx, ny, &V, &F);
+  const double angle = 120 * 3.14159265358979323846 / 180, x0 = nx / 2;
+  Eigen::MatrixX3d folded = V;
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    if (V(v, 0) > x0) {
+      const double d = V(v, 0) - x0;
+      folded(v, 0) = x0 + d * std::cos(angle);
+      folded(v, 2) = d * std::sin(angle);
+    }
+  const SurfaceDamage damage = surface_damage(V, folded, Eigen::MatrixXi(F));
+  EXPECT_EQ(damage.damaged_edges, 0);
+  EXPECT_NEAR(damage.ratio_max, 1.0, 1e-12);
+  const SurfaceFolds folds = surface_folds(V, folded, F);
+  // Interior edges: the sheet's edges but those on its border.
+  const int all_edges = nx * (ny + 1) + (nx + 1) * ny + nx * ny;
+  EXPECT_EQ(folds.edges, all_edges - 2 * (nx + ny));
+  EXPECT_EQ(folds.folded_edges, ny);  // the fold line's inner edges
+  EXPECT_NEAR(folds.dihedral_change_max, 120, 1e-9);
+  EXPECT_NEAR(folds.folded_edges_percent, 100.0 * ny / folds.edges, 1e-12);
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    EXPECT_NEAR(folds.per_vertex[v], V(v, 0) == x0 ? 120 : 0, 1e-9) << "vertex " << v;
+  // A gentler bend is no fold: 60 degrees is below the right-angle bound.
+  Eigen::MatrixX3d bent = V;
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    if (V(v, 0) > x0) {
+      const double d = V(v, 0) - x0;
+      bent(v, 0) = x0 + d * std::cos(angle / 2);
+      bent(v, 2) = d * std::sin(angle / 2);
+    }
+  EXPECT_EQ(surface_folds(V, bent, F).folded_edges, 0);
+  EXPECT_NEAR(surface_folds(V, bent, F).dihedral_change_max, 60, 1e-9);
+}
+
+TEST(SurfaceFolds, RefusesMismatchedPositionsABadBoundAndBadIndices) {
+  Eigen::MatrixX3d V;
+  Eigen::MatrixX3i F;
+  sheet(2, 2, &V, &F);
+  EXPECT_THROW(surface_folds(V, V.topRows(3), F), UsageError);
+  EXPECT_THROW(surface_folds(V, V, F, 0.0), UsageError);
+  EXPECT_THROW(surface_folds(V, V, F, 4.0), UsageError);
+  F(0, 0) = int(V.rows());
+  EXPECT_THROW(surface_folds(V, V, F), UsageError);
+}
+
+}  // namespace
+}  // namespace unfold
