@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/nearest_rank.h"
 
 namespace unfold {
 namespace {
@@ -87,11 +88,7 @@ SurfaceDamage surface_damage(const Eigen::MatrixX3d& V_in, const Eigen::MatrixX3
   const auto [low, high] = std::minmax_element(ratios.begin(), ratios.end());
   d.ratio_min = *low;
   d.ratio_max = *high;
-  // Nearest rank: the k-th smallest, k = ceil(999 m / 1000) in integers, 1 <= k <= m.
-  const size_t m = ratios.size();
-  const size_t k = std::max<size_t>((999 * m + 999) / 1000, 1);
-  std::nth_element(ratios.begin(), ratios.begin() + std::ptrdiff_t(k - 1), ratios.end());
-  d.ratio_p999 = ratios[k - 1];
+  d.ratio_p999 = nearest_rank(&ratios, 999);
   return d;
 }
 

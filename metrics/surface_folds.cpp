@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/nearest_rank.h"
 
 namespace unfold {
 namespace {
@@ -82,10 +83,8 @@ SurfaceFolds surface_folds(const Eigen::MatrixX3d& V_in, const Eigen::MatrixX3d&
   out.edges = int(changes.size());
   if (out.edges == 0) return out;
   out.folded_edges_percent = 100.0 * out.folded_edges / out.edges;
-  std::sort(changes.begin(), changes.end());
-  const size_t rank = size_t(std::ceil(0.999 * double(changes.size())));
-  out.dihedral_change_p999 = changes[std::max<size_t>(rank, 1) - 1];
-  out.dihedral_change_max = changes.back();
+  out.dihedral_change_max = *std::max_element(changes.begin(), changes.end());
+  out.dihedral_change_p999 = nearest_rank(&changes, 999);
   return out;
 }
 
