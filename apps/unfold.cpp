@@ -62,10 +62,13 @@ DEFINE_string(render, "",
 DEFINE_string(render_color, "shading",
               "colouring of the canonical pose in --render: shading, rigidity (per-vertex "
               "rigidity error), or damage (per vertex the largest |ln r| of its surface edges' "
-              "length ratios at the input's area; ln 3 = 1.1 is the damage bound)");
+              "length ratios at the input's area; ln 3 = 1.1 is the damage bound), or folds (per "
+              "vertex the largest change of its edges' dihedral angles, degrees; folded beyond "
+              "90)");
 DEFINE_string(render_focus, "",
               "--render a close-up of one region instead of the whole shape: 'worst' (the vertex "
-              "with the most stretched or crushed surface edge) or a vertex index; the input and "
+              "with the most stretched or crushed surface edge; with --render_color folds the "
+              "most folded one) or a vertex index; the input and "
               "the canonical pose each seen face on, whatever lies in front of it cut away");
 DEFINE_double(render_focus_radius, unfold::kRegionRadiusFraction,
               "--render_focus: the region's radius as a fraction of the input's bounding-box "
@@ -118,10 +121,11 @@ int run() {
     if (!path.empty()) unfold::check_writable_destination(path);
   unfold::RenderOptions render;
   render.up_axis = unfold::axis_index(FLAGS_render_up, "--render_up");
-  if (FLAGS_render_color != "shading" && FLAGS_render_color != "rigidity" &&
-      FLAGS_render_color != "damage")
-    throw unfold::UsageError("--render_color: '" + FLAGS_render_color +
-                             "' is not shading, rigidity or damage");
+  try {
+    unfold::surface_coloring(FLAGS_render_color);
+  } catch (const unfold::UsageError& e) {
+    throw unfold::UsageError(std::string("--render_color: ") + e.what());
+  }
   if (FLAGS_render_color == "rigidity" && !unfold::computes_metric(options, "E_rig"))
     throw unfold::UsageError("--render_color rigidity needs E_rig in metrics.compute (--metrics)");
   if (FLAGS_render_skeleton &&

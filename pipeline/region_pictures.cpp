@@ -79,6 +79,11 @@ Image render_region_before_after(const UnfoldResult& result, int vertex, double 
   if (damage.per_vertex.size() != result.canonical.V.rows())
     throw UsageError("render_region_before_after: the result has no per-vertex damage");
   const Eigen::MatrixX3i F = triangulate_faces(result.surface);
+  const bool folds = coloring == SurfaceColoring::kFolds;
+  if (folds && result.metrics.folds.per_vertex.size() != result.canonical.V.rows())
+    throw UsageError("render_region_before_after: the result has no per-vertex folds");
+  // 'worst' with folds: the most folded vertex (the lowest index of a tie).
+  if (vertex < 0 && folds) result.metrics.folds.per_vertex.maxCoeff(&vertex);
   if (vertex < 0) vertex = worst_region(damage, F).vertex;
   if (vertex >= result.surface.V.rows())
     throw UsageError("--render_focus: vertex " + std::to_string(vertex) + " is not in [0, " +
@@ -86,6 +91,12 @@ Image render_region_before_after(const UnfoldResult& result, int vertex, double 
   std::vector<CloseUp> tiles =
       before_after_tiles(result.surface.V, result.canonical.V, F, damage, vertex, radius_fraction,
                          up_axis, "vertex " + std::to_string(vertex));
+  if (folds) {
+    char caption[128];
+    std::snprintf(caption, sizeof caption, "vertex %d: fold %.0f deg", vertex,
+                  result.metrics.folds.per_vertex(vertex));
+    tiles[1].caption = caption;
+  }
   CloseUpSheetOptions options;
   options.columns = 2;
   options.tile_size = 360;
@@ -93,14 +104,17 @@ Image render_region_before_after(const UnfoldResult& result, int vertex, double 
   if (coloring != SurfaceColoring::kShading) {
     const Eigen::VectorXd values = surface_coloring_values(result, coloring);
     const double top =
-        coloring == SurfaceColoring::kDamage
-            ? kDamageTop
+        coloring == SurfaceColoring::kDamage ? kDamageTop
+        : folds
+            ? kFoldedDegrees
             : color_scale_top(std::vector<double>(values.data(), values.data() + values.size()));
     tiles[1].colors = color_map(values, 0, top);
     char legend[64];
     std::snprintf(legend, sizeof legend, "0 .. %.3g+", top);
     options.legend = legend;
-    title += coloring == SurfaceColoring::kDamage ? ": edge damage" : ": rigidity error";
+    title += coloring == SurfaceColoring::kDamage ? ": edge damage"
+             : folds                              ? ": folds (dihedral change, degrees)"
+                                                  : ": rigidity error";
   }
   return render_close_ups(tiles, title, options);
 }

@@ -23,16 +23,15 @@ CloseUp region_close_up(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, in
                         double radius, int up_axis);
 
 /// The --render picture with --render_focus: the region about `vertex` (-1:
-/// the worst region of result's damage) on the input (left, plainly shaded)
-/// and on the canonical form (right, coloured as `coloring`), each a close-up
-/// seen face on. The region is the ball of region_radius(input,
-/// radius_fraction) on the input and of that radius / damage.scale on the
-/// canonical form, so both show the same part at the input's area. Damage is
-/// coloured from 0 to ln 3 (the damage bound, yellow: damaged), the rigidity
-/// error from 0 to its 98th percentile. Captions: the vertex, and its worst
-/// edge ratio.
+/// the worst region of result's damage; with kFolds the most folded vertex) on the input (left,
+/// plainly shaded) and on the canonical form (right, coloured as `coloring`), each a close-up seen
+/// face on. The region is the ball of region_radius(input, radius_fraction) on the input and of
+/// that radius / damage.scale on the canonical form, so both show the same part at the input's
+/// area. Damage is coloured from 0 to ln 3 (the damage bound, yellow: damaged), folds from 0 to 90
+/// degrees (the fold bound), the rigidity error from 0 to its 98th percentile. Captions: the
+/// vertex, and its worst edge ratio (with kFolds its fold).
 /// @throws UsageError if vertex is outside the surface, the result has no
-///         per-vertex damage, or for a bad radius_fraction or up_axis
+///         per-vertex damage (or folds, with kFolds), or for a bad radius_fraction or up_axis
 Image render_region_before_after(const UnfoldResult& result, int vertex, double radius_fraction,
                                  int up_axis, SurfaceColoring coloring);
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/errors.h"
+#include "render/color_map.h"
 
 namespace unfold {
 
@@ -10,7 +11,8 @@ SurfaceColoring surface_coloring(const std::string& name) {
   if (name == "shading") return SurfaceColoring::kShading;
   if (name == "rigidity") return SurfaceColoring::kRigidity;
   if (name == "damage") return SurfaceColoring::kDamage;
-  throw UsageError("'" + name + "' is not shading, rigidity or damage");
+  if (name == "folds") return SurfaceColoring::kFolds;
+  throw UsageError("'" + name + "' is not shading, rigidity, damage or folds");
 }
 
 Eigen::VectorXd surface_coloring_values(const UnfoldResult& result, SurfaceColoring coloring) {
@@ -21,6 +23,11 @@ Eigen::VectorXd surface_coloring_values(const UnfoldResult& result, SurfaceColor
       throw UsageError("render_before_after: the result has no per-vertex damage");
     return result.metrics.damage.per_vertex;
   }
+  if (coloring == SurfaceColoring::kFolds) {
+    if (result.metrics.folds.per_vertex.size() != result.canonical.V.rows())
+      throw UsageError("render_before_after: the result has no per-vertex folds");
+    return result.metrics.folds.per_vertex;
+  }
   return {};
 }
 
@@ -30,8 +37,14 @@ Image render_before_after(const UnfoldResult& result, const RenderOptions& optio
   RenderPanel before{"input", result.surface.V, F, {}};
   RenderPanel after{"canonical", result.canonical.V, F, {}};
   after.values = surface_coloring_values(result, coloring);
+  if (coloring == SurfaceColoring::kFolds) {
+    // A fixed scale, as damage's in close-ups: yellow is folded, whatever the shape.
+    after.colors = color_map(after.values, 0, kFoldedDegrees);
+    after.values.resize(0);
+  }
   if (coloring == SurfaceColoring::kRigidity) after.title = "canonical: rigidity error";
   if (coloring == SurfaceColoring::kDamage) after.title = "canonical: edge damage";
+  if (coloring == SurfaceColoring::kFolds) after.title = "canonical: folds";
   if (draw_skeleton) {
     const CurveSkeleton& s = result.skeleton;
     if (s.edges.rows() == 0 || result.skeleton_canonical.rows() != s.nodes.rows())

@@ -14,14 +14,19 @@ enum class SurfaceColoring {
   kShading,   ///< plain shading
   kRigidity,  ///< each vertex's rigidity error (E_rig's term)
   kDamage,    ///< each vertex's edge damage: metrics.damage.per_vertex, the largest |ln r|
+  kFolds,     ///< each vertex's fold: metrics.folds.per_vertex, its edges' largest change
+              ///< of dihedral angle in degrees (a surface crumpled with its lengths kept)
 };
 
-/// "shading", "rigidity" or "damage". @throws UsageError for another name
+/// The fold bound in degrees (kFoldedDihedralChange): the top of the folds' colour scale.
+constexpr double kFoldedDegrees = 90;
+
+/// "shading", "rigidity", "damage" or "folds". @throws UsageError for another name
 SurfaceColoring surface_coloring(const std::string& name);
 
 /// The per-vertex values `coloring` paints the canonical surface with (empty
 /// for kShading).
-/// @throws UsageError if the result lacks them (no per-vertex damage)
+/// @throws UsageError if the result lacks them (no per-vertex damage or folds)
 Eigen::VectorXd surface_coloring_values(const UnfoldResult& result, SurfaceColoring coloring);
 
 /// The unfolded surface before (left half) and after (right half), side and top

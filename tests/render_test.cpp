@@ -261,6 +261,15 @@ TEST(RenderCli, FocusOnTheWorstRegionOfTheDemo) {
   ASSERT_GT(png.height, kCaptionHeight + tile);
   for (int col = 0; col < 2; ++col)
     EXPECT_FALSE(png.white(col * tile + tile / 2, kCaptionHeight + tile / 2)) << col;
+  // With folds, 'worst' is the most folded vertex: again a region at each centre.
+  const std::string folds = dir.file("folds.png");
+  ASSERT_EQ(
+      run_unfold("--demo_pose 1 --render " + folds + " --render_focus worst --render_color folds"),
+      0);
+  const Png fold_png = read_png(folds);
+  for (int col = 0; col < 2; ++col)
+    EXPECT_FALSE(fold_png.white(col * tile + tile / 2, kCaptionHeight + tile / 2)) << col;
+  EXPECT_EQ(run_unfold("--render " + folds + " --render_color fold"), 2);  // not a colouring
 }
 
 TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {

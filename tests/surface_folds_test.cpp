@@ -8,6 +8,8 @@
 
 #include "core/errors.h"
 #include "metrics/surface_damage.h"
+#include "pipeline/region_pictures.h"
+#include "pipeline/result_pictures.h"
 #include "test_meshes.h"
 
 namespace unfold {
@@ -79,6 +81,65 @@ TEST(SurfaceFolds, SeesAFoldThatKeepsEveryLength) {
     }
   EXPECT_EQ(surface_folds(V, bent, F).folded_edges, 0);
   EXPECT_NEAR(surface_folds(V, bent, F).dihedral_change_max, 60, 1e-9);
+}
+
+// --render_color folds: a sheet folded over along a line, every length kept.
+// The folds colouring marks the crease in its top colour (yellow), in the whole
+// picture and in the close-up of the most folded vertex; the close-up's damage
+// colouring (on its fixed scale), which sees lengths alone, marks nothing, nor
+// does plain shading.
+TEST(SurfaceFolds, TheFoldsColouringMarksACreaseTheDamageCannotSee) {
+  const int nx = 20, ny = 20;
+  Eigen::MatrixX3d V;
+  Eigen::MatrixX3i F;
+  sheet(nx, ny, &V, &F);
+  UnfoldResult result;
+  result.surface.V = V;
+  for (Eigen::Index t = 0; t < F.rows(); ++t)
+    result.surface.faces.push_back({F(t, 0), F(t, 1), F(t, 2)});
+  result.canonical = result.surface;
+  const double angle = 150 * 3.14159265358979323846 / 180, x0 = nx / 2;
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    if (V(v, 0) > x0) {
+      const double d = V(v, 0) - x0;
+      result.canonical.V(v, 0) = x0 + d * std::cos(angle);
+      result.canonical.V(v, 2) = d * std::sin(angle);
+    }
+  result.metrics.damage = surface_damage(V, result.canonical.V, Eigen::MatrixXi(F));
+  result.metrics.folds = surface_folds(V, result.canonical.V, F);
+  ASSERT_EQ(result.metrics.damage.damaged_edges, 0);
+  // Yellow pixels of the right half, rows [top, bottom): the canonical form.
+  const auto yellow = [](const Image& image, int top, int bottom) {
+    int count = 0;
+    for (int y = top; y < bottom; ++y)
+      for (int x = image.width / 2; x < image.width; ++x) {
+        const Rgb c = image.at(x, y);
+        count += c.r > 180 && c.g > 160 && c.b < 90;
+      }
+    return count;
+  };
+  RenderOptions render;
+  render.up_axis = 1;
+  const auto whole = [&](const char* coloring) {
+    const Image image = render_before_after(result, render, surface_coloring(coloring));
+    return yellow(image, kCaptionHeight, image.height - 20);  // above any colour bar
+  };
+  // The whole form's side view sees the crease edge on (the folded half lies
+  // over the other), a line of yellow; the close-up sees it face on, a band.
+  EXPECT_GT(whole("folds"), 0);
+  EXPECT_EQ(whole("shading"), 0);
+  // The close-up's tiles are 360 pixels square below the title.
+  const auto close_up = [&](SurfaceColoring coloring) {
+    return yellow(render_region_before_after(result, -1, 0.2, 1, coloring), kCaptionHeight,
+                  kCaptionHeight + 360);
+  };
+  EXPECT_GT(close_up(SurfaceColoring::kFolds), 20);
+  EXPECT_EQ(close_up(SurfaceColoring::kDamage), 0);
+  EXPECT_EQ(close_up(SurfaceColoring::kShading), 0);
+  EXPECT_THROW(surface_coloring("fold"), UsageError);
+  result.metrics.folds.per_vertex.resize(3);
+  EXPECT_THROW(render_before_after(result, render, SurfaceColoring::kFolds), UsageError);
+  EXPECT_THROW(render_region_before_after(result, -1, 0.2, 1, SurfaceColoring::kFolds), UsageError);
 }
 
 TEST(SurfaceFolds, RefusesMismatchedPositionsABadBoundAndBadIndices) {
