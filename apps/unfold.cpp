@@ -239,7 +239,8 @@ int run() {
       "unfolded %d surface vertices (%d tet vertices, %d tets; %s route, %d intersecting face "
       "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s; damaged "
       "surface edges %.3f %% (ratio outside [1/%g, %g]; ratio p99.9 %.2f, max %.2f, min %.3f), "
-      "%d inverted tets\n",
+      "%d inverted tets; folded surface edges %.3f %% (dihedral angle changed by more than %g "
+      "degrees; p99.9 %.0f, max %.0f)\n",
       int(result.surface.V.rows()), int(result.tets.V.rows()), int(result.tets.T.rows()),
       result.tet_report.route.c_str(), result.tet_report.num_intersecting_faces,
       result.seconds_prepare + result.seconds_unfold, metric("E_rig", m.E_rig).c_str(),
@@ -248,7 +249,9 @@ int run() {
       result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,
       result.cascade.reached_band ? "" : " (edge-ratio band not reached)",
       m.damage.damaged_edges_percent, unfold::kDamagedEdgeRatio, unfold::kDamagedEdgeRatio,
-      m.damage.ratio_p999, m.damage.ratio_max, m.damage.ratio_min, m.inverted_tets);
+      m.damage.ratio_p999, m.damage.ratio_max, m.damage.ratio_min, m.inverted_tets,
+      m.folds.folded_edges_percent, unfold::kFoldedDihedralChange * 180 / M_PI,
+      m.folds.dihedral_change_p999, m.folds.dihedral_change_max);
   return 0;
 }
 

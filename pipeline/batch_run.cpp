@@ -88,8 +88,12 @@ double parse_metric_field(const std::string& field) {
 
 const char* const kResultsHeader =
     "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
+    "surface_edge_ratio_max,inverted_tets,folded_edges_percent,dihedral_change_p999_degrees,"
+    "seconds,status";
+// results.csv before the fold columns, and before the damage columns (issue 44): still read.
+const char* const kResultsHeaderWithoutFolds =
+    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
     "surface_edge_ratio_max,inverted_tets,seconds,status";
-// results.csv before the damage columns (issue 44): still read.
 const char* const kResultsHeaderWithoutDamage =
     "shape,class,method,E_rig,E_str,E_geo,seconds,status";
 
@@ -99,16 +103,18 @@ std::string format_row(const BatchRow& r) {
     << csv_field(r.method) << ',' << metric_field(r.E_rig) << ',' << metric_field(r.E_str) << ','
     << metric_field(r.E_geo) << ',' << metric_field(r.damaged_edges_percent) << ','
     << metric_field(r.surface_edge_ratio_p999) << ',' << metric_field(r.surface_edge_ratio_max)
-    << ',' << metric_field(r.inverted_tets) << ',' << r.seconds << ',' << csv_field(r.status);
+    << ',' << metric_field(r.inverted_tets) << ',' << metric_field(r.folded_edges_percent) << ','
+    << metric_field(r.dihedral_change_p999) << ',' << r.seconds << ',' << csv_field(r.status);
   return s.str();
 }
 
-// A row of 12 fields, or of 8 (written before the damage columns).
+// A row of 14 fields, of 12 (written before the fold columns) or of 8 (before
+// the damage columns).
 BatchRow parse_row(const std::string& line, const std::string& where) {
   const std::vector<std::string> f = split_csv_line(line);
-  if (f.size() != 12 && f.size() != 8)
-    throw InputError(where + ": expected 12 fields, got " + std::to_string(f.size()));
-  const bool damage = f.size() == 12;
+  if (f.size() != 14 && f.size() != 12 && f.size() != 8)
+    throw InputError(where + ": expected 14 fields, got " + std::to_string(f.size()));
+  const bool damage = f.size() >= 12, folds = f.size() == 14;
   BatchRow r{f[0], f[1], f[2], 0, 0, 0, 0, f.back()};
   try {
     r.E_rig = parse_metric_field(f[3]), r.E_str = parse_metric_field(f[4]);
@@ -118,6 +124,10 @@ BatchRow parse_row(const std::string& line, const std::string& where) {
       r.surface_edge_ratio_p999 = parse_metric_field(f[7]);
       r.surface_edge_ratio_max = parse_metric_field(f[8]);
       r.inverted_tets = parse_metric_field(f[9]);
+    }
+    if (folds) {
+      r.folded_edges_percent = parse_metric_field(f[10]);
+      r.dihedral_change_p999 = parse_metric_field(f[11]);
     }
     r.seconds = std::stod(f[f.size() - 2]);
   } catch (const std::exception&) {
@@ -202,6 +212,8 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
       row.surface_edge_ratio_p999 = r.metrics.damage.ratio_p999;
       row.surface_edge_ratio_max = r.metrics.damage.ratio_max;
       row.inverted_tets = r.metrics.inverted_tets;
+      row.folded_edges_percent = r.metrics.folds.folded_edges_percent;
+      row.dihedral_change_p999 = r.metrics.folds.dihedral_change_p999;
       write_surface_mesh(out.file(methods[k], shape, ".off"), r.canonical);
       if (r.surface.V.rows() != input.V.rows())
         write_surface_mesh(
@@ -581,7 +593,8 @@ std::vector<BatchRow> read_results_csv(const std::string& path) {
   if (!in) throw InputError("cannot read " + path);
   std::string line;
   std::getline(in, line);
-  if (line.rfind(kResultsHeader, 0) != 0 && line.rfind(kResultsHeaderWithoutDamage, 0) != 0)
+  if (line.rfind(kResultsHeader, 0) != 0 && line.rfind(kResultsHeaderWithoutFolds, 0) != 0 &&
+      line.rfind(kResultsHeaderWithoutDamage, 0) != 0)
     throw InputError(path + ": not a results.csv (header " + line + ")");
   std::vector<BatchRow> rows;
   for (int number = 2; std::getline(in, line); ++number)

@@ -53,6 +53,11 @@ struct BatchRow {
   double surface_edge_ratio_p999 = std::numeric_limits<double>::quiet_NaN();
   double surface_edge_ratio_max = std::numeric_limits<double>::quiet_NaN();
   double inverted_tets = std::numeric_limits<double>::quiet_NaN();
+  /// The fold measure (metrics/surface_folds.h, UnfoldMetrics::folds): the share of
+  /// surface edges whose dihedral angle changed by more than 90 degrees, and the
+  /// 99.9th percentile of the change in degrees; NaN: unknown (as above).
+  double folded_edges_percent = std::numeric_limits<double>::quiet_NaN();
+  double dihedral_change_p999 = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The class of a shape: its name without trailing digits and then without
@@ -74,7 +79,8 @@ std::vector<std::string> list_meshes(const std::string& dir);
 std::vector<BatchRow> run_batch(const BatchOptions& options);
 
 /// Writes shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,
-/// surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,seconds,status
+/// surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,folded_edges_percent,
+/// dihedral_change_p999_degrees,seconds,status
 /// (atomically); a metric not computed (NaN) is an empty field, and reads back
 /// as NaN.
 /// @throws OutputError

@@ -153,29 +153,44 @@ std::string pose_table(const std::vector<ReportRun>& runs, bool ratios) {
 
 // The damage measure of a row (metrics/surface_damage.h): 0 damaged-edge
 // percent, 1 the 99.9th percentile of the surface edge ratio, 2 the largest,
-// 3 inverted tets; NaN for a failed run or a results.csv without the columns.
+// 3 inverted tets; the fold measure (metrics/surface_folds.h): 4 folded-edge
+// percent, 5 the 99.9th percentile of the dihedral change; NaN for a failed
+// run or a results.csv without the columns.
 double damage(const BatchRow& r, int k) {
   if (r.status != "ok") return std::nan("");
-  return k == 0   ? r.damaged_edges_percent
-         : k == 1 ? r.surface_edge_ratio_p999
-         : k == 2 ? r.surface_edge_ratio_max
-                  : r.inverted_tets;
+  switch (k) {
+    case 0:
+      return r.damaged_edges_percent;
+    case 1:
+      return r.surface_edge_ratio_p999;
+    case 2:
+      return r.surface_edge_ratio_max;
+    case 3:
+      return r.inverted_tets;
+    case 4:
+      return r.folded_edges_percent;
+    default:
+      return r.dihedral_change_p999;
+  }
 }
 
-// Issue 44's damage tables: per class and method, the mean of measure k over
+// Issue 44's damage and fold tables: per class and method, the mean of measure k over
 // the ok shapes that report it, and the worst shape (largest value) with its name.
 std::string damage_tables(const std::vector<BatchRow>& rows,
                           const std::vector<std::string>& methods,
                           const std::set<std::string>& classes) {
-  static const char* const kTitles[4] = {
+  static const char* const kTitles[6] = {
       "Damaged surface edges (% with length ratio outside [1/3, 3] at the input's area)",
-      "Surface edge ratio, 99.9th percentile (nearest rank)", "Largest surface edge ratio",
-      "Inverted tets in the output"};
-  static const char* const kFormats[4] = {"%.3f", "%.2f", "%.2f", "%.0f"};
+      "Surface edge ratio, 99.9th percentile (nearest rank)",
+      "Largest surface edge ratio",
+      "Inverted tets in the output",
+      "Folded surface edges (% whose dihedral angle changed by more than 90 degrees)",
+      "Change of the dihedral angle, 99.9th percentile (degrees)"};
+  static const char* const kFormats[6] = {"%.3f", "%.2f", "%.2f", "%.0f", "%.3f", "%.0f"};
   std::vector<std::string> row_classes(classes.begin(), classes.end());
   row_classes.push_back("all");
   std::ostringstream md;
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < 6; ++k) {
     md << "### " << kTitles[k]
        << " per class: mean, worst shape (ok shapes that report it / all)\n\n"
        << table_header({"class"}, methods);

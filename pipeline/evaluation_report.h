@@ -21,8 +21,9 @@ struct ReportRun {
 /// The Markdown report: for each of E_rig, E_str, E_geo a table of means over
 /// the ok rows (classes x methods, with a row over all shapes); for each of the
 /// damage measure's damaged-edge percent, 99.9th percentile and largest
-/// surface edge ratio, and the inverted tets, a table of the mean and the
-/// worst shape (rows without the damage columns left out); the failures,
+/// surface edge ratio, the inverted tets, and the fold measure's folded-edge
+/// percent and 99.9th percentile of the dihedral change, a table of the mean
+/// and the worst shape (rows without those columns left out); the failures,
 /// the retrieval measures of retrieval.csv (a row per framework and measure, a
 /// column per method, like the paper's Table 3) and pose_invariance.csv.
 /// @throws InputError for a missing or malformed results.csv

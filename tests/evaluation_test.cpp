@@ -224,12 +224,13 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
                                    {"cat1", "cat", "default", 0.7, 0.3, 0.4, 1.0, "ok"},
                                    {"cat0", "cat", "lsmds", 3.0, 0.2, 0.05, 2.0, "ok"},
                                    {"cat1", "cat", "lsmds", 0, 0, 0, 0, "no, it failed"}};
-  // The damage measure (issue 44) of the default's two cats.
-  const double damage[2][4] = {{0.5, 2.5, 8, 10}, {1.5, 48, 810, 30}};
+  // The damage and fold measures (issue 44) of the default's two cats.
+  const double damage[2][6] = {{0.5, 2.5, 8, 10, 0.25, 100}, {1.5, 48, 810, 30, 0.125, 140}};
   for (int k = 0; k < 2; ++k) {
     BatchRow& r = results[size_t(k)];
     r.damaged_edges_percent = damage[k][0], r.surface_edge_ratio_p999 = damage[k][1];
     r.surface_edge_ratio_max = damage[k][2], r.inverted_tets = damage[k][3];
+    r.folded_edges_percent = damage[k][4], r.dihedral_change_p999 = damage[k][5];
   }
   write_results_csv(dir.file("results.csv"), results);
   std::string precision = "", header =
@@ -254,6 +255,8 @@ TEST(Report, TableOfClassMeansRetrievalAndPoseFromTheRunFiles) {
   EXPECT_NE(md.find("| cat | 25.25 (worst 48.00 cat1) (2/2) |"), std::string::npos) << md;
   EXPECT_NE(md.find("| cat | 409.00 (worst 810.00 cat1) (2/2) |"), std::string::npos) << md;
   EXPECT_NE(md.find("| cat | 20 (worst 30 cat1) (2/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 0.188 (worst 0.250 cat0) (2/2) | - (0/2) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| cat | 120 (worst 140 cat1) (2/2) |"), std::string::npos) << md;
   EXPECT_NE(md.find("| framework | measure | raw@2k | default@2k |"), std::string::npos) << md;
   EXPECT_NE(md.find("| icp | NN | 0.500 | 1.000 |"), std::string::npos) << md;
   EXPECT_NE(md.find("| icp | DCG | 0.750 | 1.000 |"), std::string::npos) << md;

@@ -100,19 +100,20 @@ TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
   BatchRow damaged{"cat1", "cat", "default", 0.5, 0.25, 0.125, 2.5, "ok"};
   damaged.damaged_edges_percent = 1.25, damaged.surface_edge_ratio_p999 = 4.5;
   damaged.surface_edge_ratio_max = 213, damaged.inverted_tets = 3000;
+  damaged.folded_edges_percent = 0.375, damaged.dihedral_change_p999 = 150;
   write_results_csv(path, {{"cat0", "cat", "default", 0.5, 0.25, nan, 1.5, "ok"}, damaged});
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str().rfind("shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
                              "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,"
-                             "seconds,status\n",
+                             "folded_edges_percent,dihedral_change_p999_degrees,seconds,status\n",
                              0),
             0u)
       << text.str();
-  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,,,,,1.5,ok"), std::string::npos)
+  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,,,,,,,1.5,ok"), std::string::npos)
       << text.str();
-  EXPECT_NE(text.str().find("cat1,cat,default,0.5,0.25,0.125,1.25,4.5,213,3000,2.5,ok"),
+  EXPECT_NE(text.str().find("cat1,cat,default,0.5,0.25,0.125,1.25,4.5,213,3000,0.375,150,2.5,ok"),
             std::string::npos)
       << text.str();
   const std::vector<BatchRow> rows = read_results_csv(path);
@@ -124,11 +125,14 @@ TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
   EXPECT_EQ(rows[1].surface_edge_ratio_p999, 4.5);
   EXPECT_EQ(rows[1].surface_edge_ratio_max, 213);
   EXPECT_EQ(rows[1].inverted_tets, 3000);
+  EXPECT_TRUE(std::isnan(rows[0].folded_edges_percent));
+  EXPECT_EQ(rows[1].folded_edges_percent, 0.375);
+  EXPECT_EQ(rows[1].dihedral_change_p999, 150);
   EXPECT_EQ(rows[1].seconds, 2.5);
   EXPECT_EQ(rows[1].status, "ok");
 }
 
-// A results.csv written before the damage columns still reads: those are NaN.
+// A results.csv written before the damage or the fold columns still reads: those are NaN.
 TEST(MetricsSelection, ResultsCsvWithoutTheDamageColumnsStillReads) {
   const test::TempDir dir;
   const std::string path = dir.file("results.csv");
@@ -141,6 +145,17 @@ TEST(MetricsSelection, ResultsCsvWithoutTheDamageColumnsStillReads) {
   EXPECT_EQ(rows[0].seconds, 1.5);
   EXPECT_EQ(rows[0].status, "ok");
   EXPECT_TRUE(std::isnan(rows[0].damaged_edges_percent) && std::isnan(rows[0].inverted_tets));
+  // And one written before the fold columns: those alone are NaN.
+  test::write_bytes(path,
+                    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
+                    "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,seconds,status\n"
+                    "cat1,cat,paper,0.5,0.25,0.125,1.25,4.5,213,3000,2.5,ok\n");
+  const std::vector<BatchRow> before_folds = read_results_csv(path);
+  ASSERT_EQ(before_folds.size(), 1u);
+  EXPECT_EQ(before_folds[0].inverted_tets, 3000);
+  EXPECT_EQ(before_folds[0].seconds, 2.5);
+  EXPECT_TRUE(std::isnan(before_folds[0].folded_edges_percent) &&
+              std::isnan(before_folds[0].dihedral_change_p999));
 }
 
 TEST(MetricsSelection, UnfoldFlagWritesNullAndSaysNotComputed) {

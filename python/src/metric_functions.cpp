@@ -11,6 +11,7 @@
 #include "metrics/shape_retrieval.h"
 #include "metrics/stretch_error.h"
 #include "metrics/surface_damage.h"
+#include "metrics/surface_folds.h"
 #include "pipeline/cmbof_matrix.h"
 
 namespace py = pybind11;
@@ -65,6 +66,25 @@ void def_metric_functions(py::module_& m) {
         return r;
       },
       py::arg("rest"), py::arg("deformed"), py::arg("F"), py::arg("bound") = kDamagedEdgeRatio);
+  m.def(
+      "surface_folds",
+      [](const Vertices& rest, const Vertices& deformed, const Elements& F, double bound) {
+        SurfaceFolds f;
+        {
+          py::gil_scoped_release unlocked;
+          f = surface_folds(rest, deformed, triangulate_faces(make_surface(rest, F)), bound);
+        }
+        py::dict r;  // the metrics JSON's keys (pipeline/metrics_json.cpp)
+        r["folded_edges_percent"] = f.folded_edges_percent;
+        r["folded_surface_edges"] = f.folded_edges;
+        r["dihedral_change_p999_degrees"] = f.dihedral_change_p999;
+        r["dihedral_change_max_degrees"] = f.dihedral_change_max;
+        r["surface_edges_measured"] = f.edges;
+        r["per_vertex"] = Eigen::VectorXd(f.per_vertex);
+        return r;
+      },
+      py::arg("rest"), py::arg("deformed"), py::arg("F"),
+      py::arg("bound") = kFoldedDihedralChange);
   m.def(
       "surface_area",
       [](const Vertices& V, const Elements& F) { return surface_area(make_surface(V, F)); },

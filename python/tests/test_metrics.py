@@ -225,3 +225,52 @@ def test_cmbof_matrix_is_zero_on_a_moved_copy_and_separates_poses_from_a_box(dem
     assert D[0, 1] < 0.5 * D[0, 2]
     with pytest.raises(unfold.ConfigError, match="at least 2"):
         metrics.cmbof_matrix([(V, F)])
+
+
+FOLD_KEYS = ("folded_edges_percent", "folded_surface_edges", "dihedral_change_p999_degrees",
+             "dihedral_change_max_degrees")
+
+
+def test_surface_folds_equal_the_runs_metrics_and_see_a_fold_that_keeps_lengths(small_result):
+    r = small_result
+    n = len(r.vertices)
+    P, F = r.rest_tet_vertices[:n], r.faces
+    f = metrics.surface_folds(P, r.vertices, F)
+    for key in FOLD_KEYS:
+        assert f[key] == pytest.approx(r.metrics[key], rel=1e-12), key
+    assert f["per_vertex"].shape == (n,)
+    assert f["per_vertex"].max() == pytest.approx(f["dihedral_change_max_degrees"], rel=1e-12)
+    # A similarity bends nothing.
+    moved = 2.5 * P @ rotation(0.7).T + [1.0, -2.0, 3.0]
+    still = metrics.surface_folds(P, moved, F)
+    assert still["folded_surface_edges"] == 0 and still["dihedral_change_max_degrees"] < 1e-6
+    # A flat sheet folded over along a line keeps every length: no damage, but
+    # the edges on the line turn by 150 degrees, folded at any bound below that.
+    x, y = np.meshgrid(np.arange(7.0), np.arange(6.0))
+    sheet = np.column_stack([x.ravel(), y.ravel(), np.zeros(x.size)])
+    quads = [(j * 7 + i, j * 7 + i + 1, (j + 1) * 7 + i + 1, (j + 1) * 7 + i)
+             for j in range(5) for i in range(6)]
+    S = np.array(quads)
+    folded = sheet.copy()
+    right = sheet[:, 0] > 3
+    angle = np.radians(150)
+    d = sheet[right, 0] - 3
+    folded[right, 0] = 3 + d * np.cos(angle)
+    folded[right, 2] = d * np.sin(angle)
+    assert metrics.surface_damage(sheet, folded, S)["damaged_surface_edges"] == 0
+    crease = metrics.surface_folds(sheet, folded, S)
+    assert crease["dihedral_change_max_degrees"] == pytest.approx(150, abs=1e-9)
+    assert crease["folded_surface_edges"] == 5  # the fold line's inner edges
+    assert metrics.surface_folds(sheet, folded, S, bound_degrees=160)["folded_surface_edges"] == 0
+    np.testing.assert_allclose(crease["per_vertex"][sheet[:, 0] == 3], 150, atol=1e-9)
+    assert crease["per_vertex"][~(sheet[:, 0] == 3)].max() < 1e-9
+
+
+def test_surface_folds_refuses_bad_input(small_result):
+    r = small_result
+    n = len(r.vertices)
+    P, F = r.rest_tet_vertices[:n], r.faces
+    with pytest.raises(unfold.InputError):
+        metrics.surface_folds(P, P[:-1], F)
+    with pytest.raises(unfold.ConfigError):
+        metrics.surface_folds(P, P, F, bound_degrees=180)

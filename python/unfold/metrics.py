@@ -90,6 +90,35 @@ def surface_damage(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLik
     return result
 
 
+def surface_folds(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLike,
+                  bound_degrees: float | None = None) -> dict[str, Any]:
+    """Folds of a deformed surface (e.g. a canonical form) against its rest shape.
+
+    rest, deformed: (n, 3) positions of one surface; F: (m, k) faces, k >= 3
+    (fan-triangulated). At each edge between two triangles of nonzero area in
+    both positions, the change of its signed dihedral angle from rest to
+    deformed, in [0, 180] degrees: 0 for every edge of a rotated, scaled and
+    moved copy, and large where the surface turned over, even with every
+    length kept (which surface_damage cannot see). An edge is folded when it
+    changes by more than bound_degrees (90 by default). Returns a dict with the
+    metrics JSON's keys: folded_edges_percent, folded_surface_edges,
+    dihedral_change_p999_degrees (nearest rank), dihedral_change_max_degrees,
+    surface_edges_measured; and per_vertex ((n,) the largest change of each
+    vertex's measured edges, degrees). A run's metrics hold the same figures
+    for its surface and canonical form.
+    Raises InputError for bad arrays, ConfigError for a bound outside (0, 180).
+    """
+    P = _arrays.vertices(rest, "rest")
+    Q = _arrays.vertices(deformed, "deformed")
+    if len(Q) != len(P):
+        raise InputError(f"deformed has {len(Q)} vertices, rest {len(P)}")
+    bound = None if bound_degrees is None else float(bound_degrees) * np.pi / 180
+    result = _core.surface_folds(P, Q, _arrays.elements(F, len(P), None, "F"),
+                                 **_set(bound=bound))
+    result["per_vertex"] = np.asarray(result["per_vertex"])
+    return result
+
+
 def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
     """Total area of the triangles F of V."""
     return _core.surface_area(*_arrays.surface(V, F))
