@@ -63,7 +63,7 @@ DEFINE_string(render_color, "shading",
               "colouring of the canonical pose in --render: shading, rigidity (per-vertex "
               "rigidity error), or damage (per vertex the largest |ln r| of its surface edges' "
               "length ratios at the input's area; ln 3 = 1.1 is the damage bound), or folds (per "
-              "vertex the largest change of its edges' dihedral angles, degrees; folded beyond "
+              "vertex the largest sharpening of its edges' dihedral angles, degrees; folded beyond "
               "90)");
 DEFINE_string(render_focus, "",
               "--render a close-up of one region instead of the whole shape: 'worst' (the vertex "
@@ -239,7 +239,7 @@ int run() {
       "unfolded %d surface vertices (%d tet vertices, %d tets; %s route, %d intersecting face "
       "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s; damaged "
       "surface edges %.3f %% (ratio outside [1/%g, %g]; ratio p99.9 %.2f, max %.2f, min %.3f), "
-      "%d inverted tets; folded surface edges %.3f %% (dihedral angle changed by more than %g "
+      "%d inverted tets; folded surface edges %.3f %% (bend sharpened by more than %g "
       "degrees; p99.9 %.0f, max %.0f)\n",
       int(result.surface.V.rows()), int(result.tets.V.rows()), int(result.tets.T.rows()),
       result.tet_report.route.c_str(), result.tet_report.num_intersecting_faces,

@@ -68,9 +68,9 @@ SurfaceFolds surface_folds(const Eigen::MatrixX3d& V_in, const Eigen::MatrixX3d&
           N_out.row(t1).squaredNorm() > 0 && N_out.row(t2).squaredNorm() > 0) {
         const Eigen::Vector3d e_in = (V_in.row(b) - V_in.row(a)).normalized();
         const Eigen::Vector3d e_out = (V_out.row(b) - V_out.row(a)).normalized();
-        double change = std::abs(dihedral(N_out.row(t1), N_out.row(t2), e_out) -
-                                 dihedral(N_in.row(t1), N_in.row(t2), e_in));
-        if (change > kPi) change = 2 * kPi - change;
+        const double change =
+            std::max(0.0, std::abs(dihedral(N_out.row(t1), N_out.row(t2), e_out)) -
+                              std::abs(dihedral(N_in.row(t1), N_in.row(t2), e_in)));
         const double degrees = change * 180 / kPi;
         changes.push_back(degrees);
         out.folded_edges += change > bound;

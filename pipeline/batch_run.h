@@ -54,7 +54,7 @@ struct BatchRow {
   double surface_edge_ratio_max = std::numeric_limits<double>::quiet_NaN();
   double inverted_tets = std::numeric_limits<double>::quiet_NaN();
   /// The fold measure (metrics/surface_folds.h, UnfoldMetrics::folds): the share of
-  /// surface edges whose dihedral angle changed by more than 90 degrees, and the
+  /// surface edges whose bend sharpened by more than 90 degrees, and the
   /// 99.9th percentile of the change in degrees; NaN: unknown (as above).
   double folded_edges_percent = std::numeric_limits<double>::quiet_NaN();
   double dihedral_change_p999 = std::numeric_limits<double>::quiet_NaN();

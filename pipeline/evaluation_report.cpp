@@ -184,8 +184,8 @@ std::string damage_tables(const std::vector<BatchRow>& rows,
       "Surface edge ratio, 99.9th percentile (nearest rank)",
       "Largest surface edge ratio",
       "Inverted tets in the output",
-      "Folded surface edges (% whose dihedral angle changed by more than 90 degrees)",
-      "Change of the dihedral angle, 99.9th percentile (degrees)"};
+      "Folded surface edges (% whose bend sharpened by more than 90 degrees)",
+      "Sharpening of the bends, 99.9th percentile (degrees)"};
   static const char* const kFormats[6] = {"%.3f", "%.2f", "%.2f", "%.0f", "%.3f", "%.0f"};
   std::vector<std::string> row_classes(classes.begin(), classes.end());
   row_classes.push_back("all");

@@ -22,7 +22,7 @@ struct ReportRun {
 /// the ok rows (classes x methods, with a row over all shapes); for each of the
 /// damage measure's damaged-edge percent, 99.9th percentile and largest
 /// surface edge ratio, the inverted tets, and the fold measure's folded-edge
-/// percent and 99.9th percentile of the dihedral change, a table of the mean
+/// percent and 99.9th percentile of the bends' sharpening, a table of the mean
 /// and the worst shape (rows without those columns left out); the failures,
 /// the retrieval measures of retrieval.csv (a row per framework and measure, a
 /// column per method, like the paper's Table 3) and pose_invariance.csv.

@@ -113,7 +113,7 @@ Image render_region_before_after(const UnfoldResult& result, int vertex, double 
     std::snprintf(legend, sizeof legend, "0 .. %.3g+", top);
     options.legend = legend;
     title += coloring == SurfaceColoring::kDamage ? ": edge damage"
-             : folds                              ? ": folds (dihedral change, degrees)"
+             : folds                              ? ": folds (bend sharpened, degrees)"
                                                   : ": rigidity error";
   }
   return render_close_ups(tiles, title, options);

@@ -14,8 +14,8 @@ enum class SurfaceColoring {
   kShading,   ///< plain shading
   kRigidity,  ///< each vertex's rigidity error (E_rig's term)
   kDamage,    ///< each vertex's edge damage: metrics.damage.per_vertex, the largest |ln r|
-  kFolds,     ///< each vertex's fold: metrics.folds.per_vertex, its edges' largest change
-              ///< of dihedral angle in degrees (a surface crumpled with its lengths kept)
+  kFolds,     ///< each vertex's fold: metrics.folds.per_vertex, its edges' largest sharpening
+              ///< of bend (dihedral angle) in degrees (a surface crumpled with its lengths kept)
 };
 
 /// The fold bound in degrees (kFoldedDihedralChange): the top of the folds' colour scale.

@@ -81,8 +81,7 @@ TEST(Cli, DemoRunWritesEveryOutput) {
   EXPECT_NE(r.out.find("; damaged surface edges "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("% (ratio outside [1/3, 3]; ratio p99.9 "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" inverted tets; folded surface edges "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("% (dihedral angle changed by more than 90 degrees; p99.9 "),
-            std::string::npos)
+  EXPECT_NE(r.out.find("% (bend sharpened by more than 90 degrees; p99.9 "), std::string::npos)
       << r.out;
   // The edge damage is a point field of the canonical tet mesh.
   std::ifstream vtu(tets);

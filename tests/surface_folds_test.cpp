@@ -142,6 +142,38 @@ TEST(SurfaceFolds, TheFoldsColouringMarksACreaseTheDamageCannotSee) {
   EXPECT_THROW(render_region_before_after(result, -1, 0.2, 1, SurfaceColoring::kFolds), UsageError);
 }
 
+// The other way round: a creased input opened flat (a bent joint straightened,
+// its inner skin fold gone) is what unfolding should do, and no fold; a crease
+// turned the other way keeps its sharpness and is none either.
+TEST(SurfaceFolds, AnInputCreaseThatOpensOrTurnsIsNoFold) {
+  const int nx = 6, ny = 5;
+  Eigen::MatrixX3d V;
+  Eigen::MatrixX3i F;
+  sheet(nx, ny, &V, &F);
+  const double x0 = nx / 2;
+  const auto creased = [&](double degrees) {
+    const double angle = degrees * 3.14159265358979323846 / 180;
+    Eigen::MatrixX3d C = V;
+    for (Eigen::Index v = 0; v < V.rows(); ++v)
+      if (V(v, 0) > x0) {
+        const double d = V(v, 0) - x0;
+        C(v, 0) = x0 + d * std::cos(angle);
+        C(v, 2) = d * std::sin(angle);
+      }
+    return C;
+  };
+  const SurfaceFolds opened = surface_folds(creased(120), V, F);
+  EXPECT_EQ(opened.folded_edges, 0);
+  EXPECT_EQ(opened.dihedral_change_max, 0);
+  const SurfaceFolds turned = surface_folds(creased(120), creased(-120), F);
+  EXPECT_EQ(turned.folded_edges, 0);
+  EXPECT_LT(turned.dihedral_change_max, 1e-9);
+  // Sharpened from 60 to 170 degrees: 110 more, folded.
+  const SurfaceFolds sharper = surface_folds(creased(60), creased(170), F);
+  EXPECT_EQ(sharper.folded_edges, ny);
+  EXPECT_NEAR(sharper.dihedral_change_max, 110, 1e-9);
+}
+
 TEST(SurfaceFolds, RefusesMismatchedPositionsABadBoundAndBadIndices) {
   Eigen::MatrixX3d V;
   Eigen::MatrixX3i F;

@@ -96,14 +96,16 @@ def surface_folds(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLike
 
     rest, deformed: (n, 3) positions of one surface; F: (m, k) faces, k >= 3
     (fan-triangulated). At each edge between two triangles of nonzero area in
-    both positions, the change of its signed dihedral angle from rest to
-    deformed, in [0, 180] degrees: 0 for every edge of a rotated, scaled and
-    moved copy, and large where the surface turned over, even with every
-    length kept (which surface_damage cannot see). An edge is folded when it
-    changes by more than bound_degrees (90 by default). Returns a dict with the
+    both positions, how much sharper it bends deformed than at rest,
+    max(0, |theta_deformed| - |theta_rest|) with theta the signed dihedral
+    angle (0: flat), in [0, 180) degrees: 0 for every edge of a rotated, scaled
+    and moved copy and where a rest crease opens, large where the surface
+    turned over, even with every length kept (which surface_damage cannot
+    see). An edge is folded when its bend sharpens by more than bound_degrees
+    (90 by default). Returns a dict with the
     metrics JSON's keys: folded_edges_percent, folded_surface_edges,
     dihedral_change_p999_degrees (nearest rank), dihedral_change_max_degrees,
-    surface_edges_measured; and per_vertex ((n,) the largest change of each
+    surface_edges_measured; and per_vertex ((n,) the largest sharpening of each
     vertex's measured edges, degrees). A run's metrics hold the same figures
     for its surface and canonical form.
     Raises InputError for bad arrays, ConfigError for a bound outside (0, 180).
