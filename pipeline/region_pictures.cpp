@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/errors.h"
+#include "metrics/surface_folds.h"
 #include "metrics/worst_region.h"
 #include "render/color_map.h"
 #include "render/write_png.h"
@@ -131,35 +132,55 @@ void write_worst_region_pictures(const std::string& output_dir,
   }
   CloseUpSheetOptions options;
   options.tile_size = 200;
-  char legend[64];
-  std::snprintf(legend, sizeof legend, "|ln r| 0 .. %.3g+ (ratio %g)", kDamageTop,
-                kDamagedEdgeRatio);
-  options.legend = legend;
-  for (const auto& [c, class_shapes] : members)
-    for (size_t m = 1; m < labels.size(); ++m) {
-      std::vector<CloseUp> tiles;
-      for (size_t i : class_shapes) {
-        const PoseShape& s = shapes[i];
-        if (!s.forms[m]) continue;
-        try {
-          const SurfaceDamage damage = surface_damage(*s.forms.front(), *s.forms[m], s.F);
-          const int vertex = worst_region(damage, s.F).vertex;
-          std::vector<CloseUp> pair = before_after_tiles(*s.forms.front(), *s.forms[m], s.F, damage,
-                                                         vertex, kRegionRadiusFraction, 2, s.name);
-          pair[1].colors = color_map(damage.per_vertex, 0, kDamageTop);
-          tiles.push_back(pair[1]);  // the form first, its input beside it
-          tiles.push_back(pair[0]);
-        } catch (const InputError& e) {
-          LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
-        } catch (const NumericalError& e) {
-          LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
+  // Two galleries: the worst region by damage, and the most folded one.
+  for (const bool folds : {false, true}) {
+    char legend[64];
+    if (folds)
+      std::snprintf(legend, sizeof legend, "bend sharpened 0 .. %g+ degrees", kFoldedDegrees);
+    else
+      std::snprintf(legend, sizeof legend, "|ln r| 0 .. %.3g+ (ratio %g)", kDamageTop,
+                    kDamagedEdgeRatio);
+    options.legend = legend;
+    for (const auto& [c, class_shapes] : members)
+      for (size_t m = 1; m < labels.size(); ++m) {
+        std::vector<CloseUp> tiles;
+        for (size_t i : class_shapes) {
+          const PoseShape& s = shapes[i];
+          if (!s.forms[m]) continue;
+          try {
+            const SurfaceDamage damage = surface_damage(*s.forms.front(), *s.forms[m], s.F);
+            Eigen::VectorXd values = damage.per_vertex;
+            if (folds) values = surface_folds(*s.forms.front(), *s.forms[m], s.F).per_vertex;
+            int vertex = -1;
+            if (folds)
+              values.maxCoeff(&vertex);  // the lowest index of a tie
+            else
+              vertex = worst_region(damage, s.F).vertex;
+            std::vector<CloseUp> pair =
+                before_after_tiles(*s.forms.front(), *s.forms[m], s.F, damage, vertex,
+                                   kRegionRadiusFraction, 2, s.name);
+            pair[1].colors = color_map(values, 0, folds ? kFoldedDegrees : kDamageTop);
+            if (folds) {
+              char caption[128];
+              std::snprintf(caption, sizeof caption, "%s: fold %.0f deg", s.name.c_str(),
+                            values[vertex]);
+              pair[1].caption = caption;
+            }
+            tiles.push_back(pair[1]);  // the form first, its input beside it
+            tiles.push_back(pair[0]);
+          } catch (const InputError& e) {
+            LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
+          } catch (const NumericalError& e) {
+            LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
+          }
         }
+        if (tiles.empty()) continue;
+        const std::string what = folds ? "most folded region" : "worst region";
+        write_png(output_dir + (folds ? "/folds_" : "/worst_") + c + "_" + labels[m] + ".png",
+                  render_close_ups(tiles, labels[m] + ": " + what + " of each shape | its input",
+                                   options));
       }
-      if (tiles.empty()) continue;
-      write_png(
-          output_dir + "/worst_" + c + "_" + labels[m] + ".png",
-          render_close_ups(tiles, labels[m] + ": worst region of each shape | its input", options));
-    }
+  }
 }
 
 }  // namespace unfold

@@ -39,8 +39,10 @@ Image render_region_before_after(const UnfoldResult& result, int vertex, double 
 /// method label but "raw" (label 0) that has a form: per shape of the class,
 /// the close-up of its form's worst region, coloured by damage from 0 to ln 3,
 /// captioned with the shape's name and that worst edge ratio, and beside it
-/// the same region of the input. A form whose damage cannot be measured (a
-/// collapsed surface) gets a line in the log instead of tiles.
+/// the same region of the input; and folds_<class>_<method>.png, the same
+/// about each form's most folded vertex (metrics/surface_folds.h), coloured by
+/// the sharpening of the bends from 0 to 90 degrees, captioned with its fold. A form whose damage
+/// cannot be measured (a collapsed surface) gets a line in the log instead of tiles.
 /// @param shapes as for write_pose_invariance_tables
 /// @throws UsageError if a shape lacks its raw form or a label's entry,
 ///         OutputError if a file cannot be written

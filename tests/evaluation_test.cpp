@@ -150,6 +150,10 @@ TEST(Batch, RunsEveryShapeRecordsFailuresAndWritesTheTables) {
   for (const char* method : {"default", "lsmds"})
     EXPECT_TRUE(std::filesystem::exists(out + "/worst_body_" + method + ".png")) << method;
   EXPECT_FALSE(std::filesystem::exists(out + "/worst_body_raw.png"));
+  // And the most folded region of each.
+  for (const char* method : {"default", "lsmds"})
+    EXPECT_TRUE(std::filesystem::exists(out + "/folds_body_" + method + ".png")) << method;
+  EXPECT_FALSE(std::filesystem::exists(out + "/folds_body_raw.png"));
 }
 
 // Shards unfold their shapes, then (once every shape is done) compute their

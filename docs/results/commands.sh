@@ -40,5 +40,8 @@ for d in 2k full; do
   for f in "$OUT"/$d/similarity_*.csv; do cp "$f" "docs/results/${d}_$(basename "$f")"; done
 done
 for f in "$OUT"/full/poses_*.png; do cp "$f" docs/results/; done
+for m in paper default; do
+  for f in "$OUT"/full/worst_*_$m.png "$OUT"/full/folds_*_$m.png; do cp "$f" docs/results/; done
+done
 for f in "$OUT"/2k/poses_*.png; do cp "$f" "docs/results/2k_$(basename "$f")"; done
 for f in results pose_invariance pose_pairs; do cp "$OUT/remeshed/$f.csv" "docs/results/${f}_remeshed.csv"; done
