@@ -31,6 +31,20 @@ void sheet(int nx, int ny, Eigen::MatrixX3d* V, Eigen::MatrixX3i* F) {
     }
 }
 
+// The flat sheet V with its part beyond x = x0 turned about that line by
+// `degrees` (every length kept): a crease of that angle.
+Eigen::MatrixX3d creased(const Eigen::MatrixX3d& V, double x0, double degrees) {
+  const double angle = degrees * 3.14159265358979323846 / 180;
+  Eigen::MatrixX3d C = V;
+  for (Eigen::Index v = 0; v < V.rows(); ++v)
+    if (V(v, 0) > x0) {
+      const double d = V(v, 0) - x0;
+      C(v, 0) = x0 + d * std::cos(angle);
+      C(v, 2) = d * std::sin(angle);
+    }
+  return C;
+}
+
 TEST(SurfaceFolds, NoneUnderASimilarity) {
   const SurfaceMesh sphere = test::uv_sphere(12, 16);
   const Eigen::MatrixX3i F = triangulate_faces(sphere);
@@ -51,14 +65,8 @@ TEST(SurfaceFolds, SeesAFoldThatKeepsEveryLength) {
   Eigen::MatrixX3d V;
   Eigen::MatrixX3i F;
   sheet(nx, ny, &V, &F);
-  const double angle = 120 * 3.14159265358979323846 / 180, x0 = nx / 2;
-  Eigen::MatrixX3d folded = V;
-  for (Eigen::Index v = 0; v < V.rows(); ++v)
-    if (V(v, 0) > x0) {
-      const double d = V(v, 0) - x0;
-      folded(v, 0) = x0 + d * std::cos(angle);
-      folded(v, 2) = d * std::sin(angle);
-    }
+  const double x0 = nx / 2;
+  const Eigen::MatrixX3d folded = creased(V, x0, 120);
   const SurfaceDamage damage = surface_damage(V, folded, Eigen::MatrixXi(F));
   EXPECT_EQ(damage.damaged_edges, 0);
   EXPECT_NEAR(damage.ratio_max, 1.0, 1e-12);
@@ -72,13 +80,7 @@ TEST(SurfaceFolds, SeesAFoldThatKeepsEveryLength) {
   for (Eigen::Index v = 0; v < V.rows(); ++v)
     EXPECT_NEAR(folds.per_vertex[v], V(v, 0) == x0 ? 120 : 0, 1e-9) << "vertex " << v;
   // A gentler bend is no fold: 60 degrees is below the right-angle bound.
-  Eigen::MatrixX3d bent = V;
-  for (Eigen::Index v = 0; v < V.rows(); ++v)
-    if (V(v, 0) > x0) {
-      const double d = V(v, 0) - x0;
-      bent(v, 0) = x0 + d * std::cos(angle / 2);
-      bent(v, 2) = d * std::sin(angle / 2);
-    }
+  const Eigen::MatrixX3d bent = creased(V, x0, 60);
   EXPECT_EQ(surface_folds(V, bent, F).folded_edges, 0);
   EXPECT_NEAR(surface_folds(V, bent, F).dihedral_change_max, 60, 1e-9);
 }
@@ -98,13 +100,7 @@ TEST(SurfaceFolds, TheFoldsColouringMarksACreaseTheDamageCannotSee) {
   for (Eigen::Index t = 0; t < F.rows(); ++t)
     result.surface.faces.push_back({F(t, 0), F(t, 1), F(t, 2)});
   result.canonical = result.surface;
-  const double angle = 150 * 3.14159265358979323846 / 180, x0 = nx / 2;
-  for (Eigen::Index v = 0; v < V.rows(); ++v)
-    if (V(v, 0) > x0) {
-      const double d = V(v, 0) - x0;
-      result.canonical.V(v, 0) = x0 + d * std::cos(angle);
-      result.canonical.V(v, 2) = d * std::sin(angle);
-    }
+  result.canonical.V = creased(V, nx / 2, 150);
   result.metrics.damage = surface_damage(V, result.canonical.V, Eigen::MatrixXi(F));
   result.metrics.folds = surface_folds(V, result.canonical.V, F);
   ASSERT_EQ(result.metrics.damage.damaged_edges, 0);
@@ -151,25 +147,15 @@ TEST(SurfaceFolds, AnInputCreaseThatOpensOrTurnsIsNoFold) {
   Eigen::MatrixX3i F;
   sheet(nx, ny, &V, &F);
   const double x0 = nx / 2;
-  const auto creased = [&](double degrees) {
-    const double angle = degrees * 3.14159265358979323846 / 180;
-    Eigen::MatrixX3d C = V;
-    for (Eigen::Index v = 0; v < V.rows(); ++v)
-      if (V(v, 0) > x0) {
-        const double d = V(v, 0) - x0;
-        C(v, 0) = x0 + d * std::cos(angle);
-        C(v, 2) = d * std::sin(angle);
-      }
-    return C;
-  };
-  const SurfaceFolds opened = surface_folds(creased(120), V, F);
+  const auto crease = [&](double degrees) { return creased(V, x0, degrees); };
+  const SurfaceFolds opened = surface_folds(crease(120), V, F);
   EXPECT_EQ(opened.folded_edges, 0);
   EXPECT_EQ(opened.dihedral_change_max, 0);
-  const SurfaceFolds turned = surface_folds(creased(120), creased(-120), F);
+  const SurfaceFolds turned = surface_folds(crease(120), crease(-120), F);
   EXPECT_EQ(turned.folded_edges, 0);
   EXPECT_LT(turned.dihedral_change_max, 1e-9);
   // Sharpened from 60 to 170 degrees: 110 more, folded.
-  const SurfaceFolds sharper = surface_folds(creased(60), creased(170), F);
+  const SurfaceFolds sharper = surface_folds(crease(60), crease(170), F);
   EXPECT_EQ(sharper.folded_edges, ny);
   EXPECT_NEAR(sharper.dihedral_change_max, 110, 1e-9);
 }
