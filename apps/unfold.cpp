@@ -250,8 +250,8 @@ int run() {
       result.cascade.reached_band ? "" : " (edge-ratio band not reached)",
       m.damage.damaged_edges_percent, unfold::kDamagedEdgeRatio, unfold::kDamagedEdgeRatio,
       m.damage.ratio_p999, m.damage.ratio_max, m.damage.ratio_min, m.inverted_tets,
-      m.folds.folded_edges_percent, unfold::kFoldedDihedralChange * 180 / M_PI,
-      m.folds.dihedral_change_p999, m.folds.dihedral_change_max);
+      m.folds.folded_edges_percent, unfold::kFoldedDegrees, m.folds.dihedral_change_p999,
+      m.folds.dihedral_change_max);
   return 0;
 }
 

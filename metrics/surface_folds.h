@@ -10,9 +10,12 @@
 
 namespace unfold {
 
-/// An edge is folded when its bend sharpens by more than this (radians: a right
-/// angle, the surface there turned over against its neighbour).
-constexpr double kFoldedDihedralChange = 1.5707963267948966;
+/// An edge is folded when its bend sharpens by more than this many degrees (a
+/// right angle: the surface there turned over against its neighbour); the
+/// per-vertex values and the percentiles are in degrees.
+constexpr double kFoldedDegrees = 90;
+/// The same bound in radians, the unit surface_folds() takes.
+constexpr double kFoldedDihedralChange = kFoldedDegrees * 3.14159265358979323846 / 180;
 
 /// The fold measure of one triangle surface in two positions (see surface_folds()).
 struct SurfaceFolds {

@@ -22,17 +22,22 @@ const double kDamageTop = std::log(kDamagedEdgeRatio);
 
 // The close-ups of the region about `vertex` on the input and on the canonical
 // form, in that order and plainly shaded, captioned "<name>: input" and `name`
-// with the vertex's worst edge ratio.
+// with the vertex's worst edge ratio (with `folds`, per-vertex fold degrees:
+// with its fold).
 std::vector<CloseUp> before_after_tiles(const Eigen::MatrixX3d& input, const Eigen::MatrixX3d& form,
                                         const Eigen::MatrixX3i& F, const SurfaceDamage& damage,
                                         int vertex, double radius_fraction, int up_axis,
-                                        const std::string& name) {
+                                        const std::string& name,
+                                        const Eigen::VectorXd* folds = nullptr) {
   const double radius = region_radius(input, radius_fraction);
   CloseUp before = region_close_up(input, F, vertex, radius, up_axis);
   CloseUp after = region_close_up(form, F, vertex, radius / damage.scale, up_axis);
   char caption[128];
-  std::snprintf(caption, sizeof caption, "%s: ratio %.3g", name.c_str(),
-                damage.per_vertex_ratio[vertex]);
+  if (folds)
+    std::snprintf(caption, sizeof caption, "%s: fold %.0f deg", name.c_str(), (*folds)[vertex]);
+  else
+    std::snprintf(caption, sizeof caption, "%s: ratio %.3g", name.c_str(),
+                  damage.per_vertex_ratio[vertex]);
   after.caption = caption;
   before.caption = name + ": input";
   return {before, after};
@@ -81,29 +86,21 @@ Image render_region_before_after(const UnfoldResult& result, int vertex, double 
     throw UsageError("render_region_before_after: the result has no per-vertex damage");
   const Eigen::MatrixX3i F = triangulate_faces(result.surface);
   const bool folds = coloring == SurfaceColoring::kFolds;
-  if (folds && result.metrics.folds.per_vertex.size() != result.canonical.V.rows())
-    throw UsageError("render_region_before_after: the result has no per-vertex folds");
+  const Eigen::VectorXd values = surface_coloring_values(result, coloring);
   // 'worst' with folds: the most folded vertex (the lowest index of a tie).
-  if (vertex < 0 && folds) result.metrics.folds.per_vertex.maxCoeff(&vertex);
+  if (vertex < 0 && folds) values.maxCoeff(&vertex);
   if (vertex < 0) vertex = worst_region(damage, F).vertex;
   if (vertex >= result.surface.V.rows())
     throw UsageError("--render_focus: vertex " + std::to_string(vertex) + " is not in [0, " +
                      std::to_string(result.surface.V.rows()) + ")");
   std::vector<CloseUp> tiles =
       before_after_tiles(result.surface.V, result.canonical.V, F, damage, vertex, radius_fraction,
-                         up_axis, "vertex " + std::to_string(vertex));
-  if (folds) {
-    char caption[128];
-    std::snprintf(caption, sizeof caption, "vertex %d: fold %.0f deg", vertex,
-                  result.metrics.folds.per_vertex(vertex));
-    tiles[1].caption = caption;
-  }
+                         up_axis, "vertex " + std::to_string(vertex), folds ? &values : nullptr);
   CloseUpSheetOptions options;
   options.columns = 2;
   options.tile_size = 360;
   std::string title = "input | canonical";
   if (coloring != SurfaceColoring::kShading) {
-    const Eigen::VectorXd values = surface_coloring_values(result, coloring);
     const double top =
         coloring == SurfaceColoring::kDamage ? kDamageTop
         : folds
@@ -132,55 +129,51 @@ void write_worst_region_pictures(const std::string& output_dir,
   }
   CloseUpSheetOptions options;
   options.tile_size = 200;
-  // Two galleries: the worst region by damage, and the most folded one.
-  for (const bool folds : {false, true}) {
-    char legend[64];
-    if (folds)
-      std::snprintf(legend, sizeof legend, "bend sharpened 0 .. %g+ degrees", kFoldedDegrees);
-    else
-      std::snprintf(legend, sizeof legend, "|ln r| 0 .. %.3g+ (ratio %g)", kDamageTop,
-                    kDamagedEdgeRatio);
+  char damage_legend[64], folds_legend[64];
+  std::snprintf(damage_legend, sizeof damage_legend, "|ln r| 0 .. %.3g+ (ratio %g)", kDamageTop,
+                kDamagedEdgeRatio);
+  std::snprintf(folds_legend, sizeof folds_legend, "bend sharpened 0 .. %g+ degrees",
+                kFoldedDegrees);
+  // A gallery of a class and method: each form's tile first, its input beside it.
+  const auto write_gallery = [&](const std::vector<CloseUp>& tiles, const std::string& file,
+                                 const std::string& title, const char* legend) {
+    if (tiles.empty()) return;
     options.legend = legend;
-    for (const auto& [c, class_shapes] : members)
-      for (size_t m = 1; m < labels.size(); ++m) {
-        std::vector<CloseUp> tiles;
-        for (size_t i : class_shapes) {
-          const PoseShape& s = shapes[i];
-          if (!s.forms[m]) continue;
-          try {
-            const SurfaceDamage damage = surface_damage(*s.forms.front(), *s.forms[m], s.F);
-            Eigen::VectorXd values = damage.per_vertex;
-            if (folds) values = surface_folds(*s.forms.front(), *s.forms[m], s.F).per_vertex;
-            int vertex = -1;
-            if (folds)
-              values.maxCoeff(&vertex);  // the lowest index of a tie
-            else
-              vertex = worst_region(damage, s.F).vertex;
-            std::vector<CloseUp> pair =
-                before_after_tiles(*s.forms.front(), *s.forms[m], s.F, damage, vertex,
-                                   kRegionRadiusFraction, 2, s.name);
-            pair[1].colors = color_map(values, 0, folds ? kFoldedDegrees : kDamageTop);
-            if (folds) {
-              char caption[128];
-              std::snprintf(caption, sizeof caption, "%s: fold %.0f deg", s.name.c_str(),
-                            values[vertex]);
-              pair[1].caption = caption;
-            }
-            tiles.push_back(pair[1]);  // the form first, its input beside it
-            tiles.push_back(pair[0]);
-          } catch (const InputError& e) {
-            LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
-          } catch (const NumericalError& e) {
-            LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
-          }
+    write_png(file, render_close_ups(tiles, title, options));
+  };
+  for (const auto& [c, class_shapes] : members)
+    for (size_t m = 1; m < labels.size(); ++m) {
+      // Both galleries from one pass: the worst region by damage, and the most folded one.
+      std::vector<CloseUp> worst, folded;
+      for (size_t i : class_shapes) {
+        const PoseShape& s = shapes[i];
+        if (!s.forms[m]) continue;
+        try {
+          const Eigen::MatrixX3d &input = *s.forms.front(), &form = *s.forms[m];
+          const SurfaceDamage damage = surface_damage(input, form, s.F);
+          const Eigen::VectorXd folds = surface_folds(input, form, s.F).per_vertex;
+          int vertex = worst_region(damage, s.F).vertex;
+          std::vector<CloseUp> pair = before_after_tiles(input, form, s.F, damage, vertex,
+                                                         kRegionRadiusFraction, 2, s.name);
+          pair[1].colors = color_map(damage.per_vertex, 0, kDamageTop);
+          worst.insert(worst.end(), {pair[1], pair[0]});
+          folds.maxCoeff(&vertex);  // the lowest index of a tie
+          pair = before_after_tiles(input, form, s.F, damage, vertex, kRegionRadiusFraction, 2,
+                                    s.name, &folds);
+          pair[1].colors = color_map(folds, 0, kFoldedDegrees);
+          folded.insert(folded.end(), {pair[1], pair[0]});
+        } catch (const InputError& e) {
+          LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
+        } catch (const NumericalError& e) {
+          LOG(WARNING) << "worst region of " << s.name << ", " << labels[m] << ": " << e.what();
         }
-        if (tiles.empty()) continue;
-        const std::string what = folds ? "most folded region" : "worst region";
-        write_png(output_dir + (folds ? "/folds_" : "/worst_") + c + "_" + labels[m] + ".png",
-                  render_close_ups(tiles, labels[m] + ": " + what + " of each shape | its input",
-                                   options));
       }
-  }
+      const std::string name = c + "_" + labels[m] + ".png";
+      write_gallery(worst, output_dir + "/worst_" + name,
+                    labels[m] + ": worst region of each shape | its input", damage_legend);
+      write_gallery(folded, output_dir + "/folds_" + name,
+                    labels[m] + ": most folded region of each shape | its input", folds_legend);
+    }
 }
 
 }  // namespace unfold

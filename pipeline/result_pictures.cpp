@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/errors.h"
+#include "metrics/surface_folds.h"
 #include "render/color_map.h"
 
 namespace unfold {

@@ -18,9 +18,6 @@ enum class SurfaceColoring {
               ///< of bend (dihedral angle) in degrees (a surface crumpled with its lengths kept)
 };
 
-/// The fold bound in degrees (kFoldedDihedralChange): the top of the folds' colour scale.
-constexpr double kFoldedDegrees = 90;
-
 /// "shading", "rigidity", "damage" or "folds". @throws UsageError for another name
 SurfaceColoring surface_coloring(const std::string& name);
 
