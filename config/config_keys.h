@@ -48,6 +48,10 @@
     "integrate.iterations: anchor of the steps after the first, in units of lambda_2 of the "      \
     "surface's graph Laplacian (modes stiffer than this get the input's detail back, softer "      \
     "ones keep the integrated pose)")                                                              \
+  X(integrate_anchor_weights, "integrate.anchor_weights", integrate.anchor_weights,                \
+    "integrate.iterations: how the anchor is shared: uniform (alike on every vertex) or "          \
+    "stiffness (in proportion to each vertex's own ARAP stiffness: finely meshed faces and "       \
+    "hands keep their own detail as coarse parts do, docs/method.md)")                             \
   X(integrate_tolerance, "integrate.tolerance", integrate.tolerance,                               \
     "integrate.iterations: stop when a step moves every vertex less than this times the radius")   \
   X(integrate_weights, "integrate.weights", integrate.weights,                                     \

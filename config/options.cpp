@@ -178,6 +178,7 @@ Options::Options() {
   cascade.anderson = 5;
   integrate.iterations = 60;
   integrate.weights = "inverse_length";
+  integrate.anchor_weights = "stiffness";
   integrate.surface_edges = 0.25;
   soften.scale = 2.0;
   energy.stretch_masses = "lumped";
@@ -279,6 +280,9 @@ void validate_options(const Options& o) {
   require(o.integrate.weights == "uniform" || o.integrate.weights == "inverse_length",
           "integrate.weights",
           "must be uniform or inverse_length, got '" + o.integrate.weights + "'");
+  require(o.integrate.anchor_weights == "uniform" || o.integrate.anchor_weights == "stiffness",
+          "integrate.anchor_weights",
+          "must be uniform or stiffness, got '" + o.integrate.anchor_weights + "'");
   require(std::isfinite(o.soften.scale) && o.soften.scale >= 0, "soften.scale",
           "must be >= 0 (0 = off)");
   require(o.soften.floor > 0 && o.soften.floor <= 1, "soften.floor", "must be in (0, 1]");

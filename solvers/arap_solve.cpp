@@ -51,6 +51,25 @@ std::vector<double> edge_weights(const EdgeGraph& graph, const Eigen::MatrixX3d&
   return w;
 }
 
+// arap_anchor_weights (m >= 0 free rows).
+Eigen::VectorXd anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                               const ArapSolveOptions& options) {
+  const int m = graph.num_vertices - options.num_fixed;
+  Eigen::VectorXd a = Eigen::VectorXd::Constant(m, options.anchor);
+  if (!options.anchor_by_stiffness || m == 0) return a;
+  ArapSolveOptions unfactored = options;
+  unfactored.edge_factors.clear();
+  const std::vector<double> w = edge_weights(graph, P, unfactored);
+  Eigen::VectorXd k = Eigen::VectorXd::Zero(m);
+  for (int i = options.num_fixed; i < graph.num_vertices; ++i)
+    for (int j = graph.offsets[size_t(i)]; j < graph.offsets[size_t(i) + 1]; ++j)
+      k(i - options.num_fixed) += w[size_t(graph.neighbor_edge[size_t(j)])] *
+                                  (P.row(i) - P.row(graph.neighbors[size_t(j)])).squaredNorm();
+  const double mean = k.mean();
+  if (mean > 0) a.array() *= k.array() / mean;
+  return a;
+}
+
 // The weighted graph Laplacian: L_ij = -w_ij, L_ii = sum_j w_ij.
 Eigen::SparseMatrix<double> weighted_laplacian(const EdgeGraph& graph,
                                                const std::vector<double>& w) {
@@ -71,6 +90,7 @@ Eigen::SparseMatrix<double> weighted_laplacian(const EdgeGraph& graph,
 // arap_factorization with the edge weights computed already (m >= 1 free rows).
 std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
                                                  const std::vector<double>& weights,
+                                                 const Eigen::VectorXd& anchor,
                                                  const ArapSolveOptions& options) {
   const int m = graph.num_vertices - options.num_fixed;
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
@@ -80,9 +100,12 @@ std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
                                        : graph_laplacian(graph))
                                       .bottomRightCorner(m, m);
   if (options.anchor > 0) {
-    Eigen::SparseMatrix<double> I(m, m);
-    I.setIdentity();
-    L += options.anchor * I;
+    Eigen::SparseMatrix<double> A(m, m);
+    std::vector<Eigen::Triplet<double>> diagonal;
+    diagonal.reserve(size_t(m));
+    for (int i = 0; i < m; ++i) diagonal.emplace_back(i, i, anchor(i));
+    A.setFromTriplets(diagonal.begin(), diagonal.end());
+    L += A;
   }
   // L is positive definite (every free vertex reaches a held one): supernodal
   // LL^T, 3-4x faster to factorize than LDL^T on a 68k-vertex tet mesh.
@@ -105,7 +128,17 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
     throw UsageError(
         "arap_factorization: need P with one row per graph vertex and 1 to n - 1 held");
   check_edge_factors(graph, options, "arap_factorization");
-  return factorize_free_block(graph, edge_weights(graph, P, options), options);
+  const std::vector<double> weights = edge_weights(graph, P, options);
+  return factorize_free_block(graph, weights, anchor_weights(graph, P, options), options);
+}
+
+Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                    const ArapSolveOptions& options) {
+  const int n = graph.num_vertices;
+  if (P.rows() != n || options.num_fixed < 1 || options.num_fixed > n)
+    throw UsageError("arap_anchor_weights: need P with one row per graph vertex and 1 to n held");
+  check_edge_factors(graph, options, "arap_anchor_weights");
+  return anchor_weights(graph, P, options);
 }
 
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
@@ -121,15 +154,16 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   report_stage("ARAP steps, " + std::to_string(m) + " free vertices" +
                (options.anchor > 0 ? ", anchored" : ""));
   const std::vector<double> weights = edge_weights(graph, P, options);
+  const Eigen::VectorXd anchor = anchor_weights(graph, P, options);
   std::unique_ptr<SparseLdlt> own;
   if (!factor) {
-    own = factorize_free_block(graph, weights, options);
+    own = factorize_free_block(graph, weights, anchor, options);
     factor = own.get();
   }
   const SparseLdlt& ldlt = *factor;
   const Eigen::MatrixX3d start = Q.bottomRows(m);
   // The right side's parts that do not change: the anchor, and the held neighbours.
-  Eigen::MatrixX3d fixed_rhs = options.anchor * start;
+  Eigen::MatrixX3d fixed_rhs = anchor.asDiagonal() * start;
 #pragma omp parallel for schedule(static) if (m >= kMinParallelRows)
   for (int i = num_fixed; i < n; ++i)
     for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
@@ -157,10 +191,10 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
 
   // At X's best rotations R (per cell): B_i = sum_j w_ij (R_i + R_j)/2 (p_i - p_j), the
   // right side's part that changes (free rows), and the energy the steps lower,
-  // 1/2 sum_i sum_{j in N_i} w_ij |x_i - x_j - R_i (p_i - p_j)|^2 + anchor |free rows - start|^2
+  // 1/2 sum_i sum_{j in N_i} w_ij |x_i - x_j - R_i (p_i - p_j)|^2 + sum_i a_i |x_i - start_i|^2
   // (the active cells' terms: the others are constant): the local step minimises it
   // over R, the global step over the free rows (its gradient is 2 (L x - B) +
-  // 2 anchor (x - start)), so plain steps never raise it. Each fit starts its
+  // 2 a (x - start)), so plain steps never raise it. Each fit starts its
   // rotations from the last fit's (cells turn little between steps).
   Rotations R(size_t(n), Eigen::Matrix3d::Identity());
   bool warm = false;
@@ -196,7 +230,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       }
       if (i >= num_fixed) B.row(i - num_fixed) = b;
     }
-    return energy + options.anchor * (X.bottomRows(m) - start).squaredNorm();
+    return energy + anchor.dot((X.bottomRows(m) - start).rowwise().squaredNorm());
   };
   const bool accelerate = options.anderson > 0;
   AndersonAcceleration anderson(std::max(1, options.anderson));

@@ -23,7 +23,8 @@ struct ArapSolveOptions {
   /// stop when a step moves every free vertex by less than this times Q's RMS radius
   double tolerance = 1e-7;
   /// weight a of a |q_i - q_i^start|^2 per free vertex, in units of the
-  /// uniform graph Laplacian (whose diagonal is the degree); 0: none
+  /// uniform graph Laplacian (whose diagonal is the degree; shared among the
+  /// vertices as anchor_by_stiffness says); 0: none
   double anchor = 0;
   /// Anderson acceleration window of the steps (0: plain steps). An
   /// extrapolated step is kept only if it lowers the energy.
@@ -36,7 +37,26 @@ struct ArapSolveOptions {
   /// Optional factors of the edge weights, one per edge of the graph (its order),
   /// each finite and > 0; empty: none.
   std::vector<double> edge_factors;
+  /// How the anchor is shared: false, `anchor` on every free vertex; true,
+  /// `anchor` times the vertex's own stiffness as the mesh makes it, k_i =
+  /// sum_j w_ij |p_i - p_j|^2 with w_ij the length weights alone (uniform or
+  /// inverse length; the edge factors weigh edges, not the mesh's density),
+  /// over the free vertices' mean k (arap_anchor_weights). Alike for every
+  /// vertex, the anchor holds a finely meshed part (a face, a hand) harder
+  /// against its own stiffness than a coarse one, so there modes of a given
+  /// size follow the anchor's shape where elsewhere they get the rest shape's
+  /// back (docs/method.md, the anchor).
+  bool anchor_by_stiffness = false;
 };
+
+/// Per free vertex (rows num_fixed and up, in order), the weight a_i of its
+/// anchor term a_i |q_i - q_i^start|^2: options.anchor, or with
+/// options.anchor_by_stiffness options.anchor k_i / mean k (k as there; every k
+/// zero: options.anchor).
+/// @throws UsageError if P's rows are not the graph's vertices, num_fixed is not
+///         in [1, n], or edge_factors are not one finite factor > 0 per edge
+Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                    const ArapSolveOptions& options);
 
 /// The factor arap_solve's global steps solve with: the free rows' block of the
 /// graph Laplacian (weighted as options.inverse_length_weights) plus the

@@ -37,12 +37,17 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
   if (options.weights != "uniform" && options.weights != "inverse_length")
     throw UsageError("integrate_rotation_field: weights must be uniform or inverse_length, got '" +
                      options.weights + "'");
+  if (options.anchor_weights != "uniform" && options.anchor_weights != "stiffness")
+    throw UsageError(
+        "integrate_rotation_field: anchor_weights must be uniform or stiffness, got '" +
+        options.anchor_weights + "'");
   const bool inverse_length = options.weights == "inverse_length";
   IntegratedRotations out{Q,
                           {1, options.iterations - 1, options.tolerance, options.anchor * lambda2,
                            5, inverse_length, edge_factors},
                           {},
                           {}};
+  out.anchored.anchor_by_stiffness = options.anchor_weights == "stiffness";
   if (options.iterations == 0) return out;
   if (out.anchored.max_iterations > 0 && graph.num_vertices > 1)
     out.anchored_factor = std::async(std::launch::async, [&graph, &P, anchored = out.anchored] {
@@ -62,12 +67,13 @@ Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& 
     const std::unique_ptr<SparseLdlt> factor =
         integrated.anchored_factor.valid() ? integrated.anchored_factor.get() : nullptr;
     if (factor && integrated.pull.rows() == X.rows()) {
-      // The factor is L + a on the free rows (all but the held first): a (L + a)^-1
-      // passes the modes softer than a (the pose) and damps the stiffer ones.
+      // The factor is L + A on the free rows (all but the held first): (L + A)^-1 A
+      // passes the modes softer than the anchor (the pose) and damps the stiffer ones.
       const int m = int(X.rows()) - integrated.anchored.num_fixed;
+      const Eigen::VectorXd A = arap_anchor_weights(graph, P, integrated.anchored);
       Eigen::MatrixX3d filtered;
-      factor->solve(integrated.pull.bottomRows(m), &filtered);
-      X.bottomRows(m) += integrated.anchored.anchor * filtered;
+      factor->solve(A.asDiagonal() * integrated.pull.bottomRows(m), &filtered);
+      X.bottomRows(m) += filtered;
     }
     X = arap_solve(graph, P, std::move(X), integrated.anchored, factor.get());
   }

@@ -23,6 +23,10 @@ struct IntegrateOptions {
   /// stiffer than about this are restored to the rest shape's, softer ones (the pose)
   /// stay where the integration put them
   double anchor = 20;
+  /// how the anchor is shared among the vertices: "uniform" (alike) or "stiffness"
+  /// (in proportion to each vertex's own stiffness, ArapSolveOptions::
+  /// anchor_by_stiffness: finely meshed parts keep their own detail as coarse ones do)
+  std::string anchor_weights = "uniform";
   double tolerance = 1e-4;  ///< the steps stop when they move less (relative to the radius)
   /// edge weights of every step: "uniform" or "inverse_length" (ArapSolveOptions::
   /// inverse_length_weights: long chords of a tet mesh do not stiffen its bending)
@@ -65,7 +69,8 @@ struct IntegratedRotations {
 ///        of its surface's graph Laplacian, the same for every pose
 /// @param edge_factors optional: per edge of `graph` (its order), a factor of the
 ///        steps' weights (ArapSolveOptions::edge_factors); empty: none
-/// @throws UsageError for mismatched sizes, negative options, unknown weights, or a
+/// @throws UsageError for mismatched sizes, negative options, unknown weights or
+///         anchor_weights, or a
 ///         pose_pull outside [0, 1] or without anchored steps (iterations >= 2, anchor > 0)
 IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                         const Eigen::MatrixX3d& Q, double lambda2,
@@ -74,7 +79,8 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
 
 /// Up to iterations - 1 ARAP steps anchored to the integrated field with weight
 /// anchor * lambda2 (integrate_rotations' options), the field first moved by
-/// its pull, filtered: a (L + a)^-1 pull, a = anchor * lambda2.
+/// its pull, filtered: (L + A)^-1 A pull, A the anchor weights (a = anchor *
+/// lambda2 per vertex, or shared by stiffness).
 /// @return zero-mean positions (n x 3)
 /// @throws UsageError for mismatched sizes
 Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& P,

@@ -277,6 +277,57 @@ TEST(ArapSolve, EdgeFactorsWeighTheirEdges) {
   EXPECT_THROW(arap_factorization(graph, g.mesh.V, wrong), UsageError);
 }
 
+// Shared by stiffness, each free vertex's anchor is the anchor times its
+// sum_j w_ij |p_i - p_j|^2 over the mean: the free vertices' weights average the
+// anchor, the grid's inner vertices (alike) get one weight, above the boundary's.
+TEST(ArapSolve, AnAnchorSharedByStiffnessFollowsEachVertexsStiffness) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  ArapSolveOptions options = anchored_to_convergence();
+  options.inverse_length_weights = true;
+  EXPECT_EQ(arap_anchor_weights(graph, g.mesh.V, options),
+            Eigen::VectorXd::Constant(graph.num_vertices - 1, options.anchor));
+  options.anchor_by_stiffness = true;
+  const Eigen::VectorXd a = arap_anchor_weights(graph, g.mesh.V, options);
+  ASSERT_EQ(a.size(), graph.num_vertices - 1);
+  EXPECT_NEAR(a.mean(), options.anchor, 1e-12);
+  const Eigen::VectorXd inner = a.tail(27);
+  EXPECT_LT(inner.maxCoeff() - inner.minCoeff(), 1e-12);
+  EXPECT_GT(inner.minCoeff(), a.head(g.num_boundary - 1).maxCoeff());
+  EXPECT_THROW(arap_anchor_weights(graph, g.mesh.V.topRows(10), options), UsageError);
+}
+
+// The anchored energy with each vertex's own anchor weight (arap_anchor_weights).
+double shared_anchor_energy(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                            const Eigen::MatrixX3d& Q, const Eigen::MatrixX3d& start,
+                            const Eigen::VectorXd& a) {
+  const int m = int(a.size());
+  return 0.5 * arap_energy(graph, P, Q) +
+         a.dot((Q.bottomRows(m) - start.bottomRows(m)).rowwise().squaredNorm());
+}
+
+// Converged, each sharing of the anchor ends at the lower value of its own
+// energy: the steps minimise the energy with every vertex's own anchor weight.
+// The edge factors weigh edges, not the mesh: they leave the weights alone.
+TEST(ArapSolve, AnAnchorSharedByStiffnessIsTheEnergyMinimised) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
+  ArapSolveOptions options = anchored_to_convergence();
+  const Eigen::MatrixX3d alike = arap_solve(graph, g.mesh.V, bent, options);
+  const Eigen::VectorXd a_alike = arap_anchor_weights(graph, g.mesh.V, options);
+  options.anchor_by_stiffness = true;
+  const Eigen::MatrixX3d shared = arap_solve(graph, g.mesh.V, bent, options);
+  const Eigen::VectorXd a_shared = arap_anchor_weights(graph, g.mesh.V, options);
+  EXPECT_GT((alike - shared).rowwise().norm().maxCoeff(), 1e-3) << "the sharing matters";
+  EXPECT_LT(shared_anchor_energy(graph, g.mesh.V, shared, bent, a_shared),
+            shared_anchor_energy(graph, g.mesh.V, alike, bent, a_shared));
+  EXPECT_LT(shared_anchor_energy(graph, g.mesh.V, alike, bent, a_alike),
+            shared_anchor_energy(graph, g.mesh.V, shared, bent, a_alike));
+  options.edge_factors.assign(size_t(graph.num_edges()), 0.5);
+  EXPECT_EQ(arap_anchor_weights(graph, g.mesh.V, options), a_shared);
+}
+
 TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);

@@ -89,16 +89,20 @@ TEST(IntegrateRotationField, APosePullTowardASimilarityOfTheResultChangesNothing
 
 // Q that similarity with noise at every vertex: the steps start from the pull
 // low-pass filtered, so a full pull ends far nearer the rest shape than Q's own
-// shape is (an unfiltered full pull would end at Q's shape).
+// shape is (an unfiltered full pull would end at Q's shape); so too with the
+// anchor shared by stiffness, whose filter weighs each vertex's pull by its anchor.
 TEST(IntegrateRotationField, APosePullFiltersOutTheSolvesNoise) {
   const Grid g(12);
   const Eigen::Matrix3d R = test::random_rotation(9);
   const Eigen::MatrixX3d noise = 0.3 * Eigen::MatrixX3d::Random(g.mesh.V.rows(), 3);
   const Eigen::MatrixX3d Q = 2.0 * (g.mesh.V + noise) * R.transpose();
   const Eigen::MatrixX3d rest = g.centred() * R.transpose();
-  const Eigen::MatrixX3d X =
-      integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, pulled(20, 1));
-  EXPECT_LT(aligned_distance(X, rest), 0.3 * aligned_distance(Q / 2.0, rest));
+  for (const char* shared : {"uniform", "stiffness"}) {
+    IntegrateOptions options = pulled(20, 1);
+    options.anchor_weights = shared;
+    const Eigen::MatrixX3d X = integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, options);
+    EXPECT_LT(aligned_distance(X, rest), 0.3 * aligned_distance(Q / 2.0, rest)) << shared;
+  }
 }
 
 TEST(IntegrateRotationField, TurnsWithItsInput) {
@@ -122,6 +126,10 @@ TEST(IntegrateRotationField, RefusesBadOptions) {
   IntegrateOptions cotangent = steps(2);
   cotangent.weights = "cotangent";
   EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, cotangent),
+               UsageError);
+  IntegrateOptions shared = steps(2);
+  shared.anchor_weights = "mass";
+  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, shared),
                UsageError);
   IntegrateOptions pull = steps(2);
   pull.pose_pull = 1.5;
