@@ -10,8 +10,9 @@
 
 namespace unfold {
 
-int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
-                       Eigen::MatrixX4i* T, const Eigen::MatrixXi* joined, double min_quality) {
+DroppedTets drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
+                               Eigen::MatrixX4i* T, const Eigen::MatrixXi* joined,
+                               double min_quality) {
   const int n = int(made.rows());
   if (rest.rows() != n)
     throw UsageError("drop_inverted_tets: the two positions have " + std::to_string(n) + " and " +
@@ -31,8 +32,9 @@ int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& res
     for (Eigen::Index r = 0; r < joined->rows(); ++r)
       for (Eigen::Index k = 1; k < joined->cols(); ++k)
         parts.unite((*joined)(r, 0), (*joined)(r, k));
+  const auto inverted = [&](Eigen::Index t) { return before[t] * after[t] <= 0 && before[t] != 0; };
   for (Eigen::Index t = 0; t < T->rows(); ++t) {
-    keep[size_t(t)] = !(before[t] * after[t] <= 0 && before[t] != 0) && quality[t] >= min_quality;
+    keep[size_t(t)] = !inverted(t) && quality[t] >= min_quality;
     if (keep[size_t(t)])
       for (int k = 1; k < 4; ++k) parts.unite((*T)(t, 0), (*T)(t, k));
   }
@@ -50,12 +52,18 @@ int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& res
     if (keep[size_t(t)])
       for (int k = 1; k < 4; ++k) parts.unite((*T)(t, 0), (*T)(t, k));
   }
+  DroppedTets out;
   Eigen::Index rows = 0;
-  for (Eigen::Index t = 0; t < T->rows(); ++t)
-    if (keep[size_t(t)]) T->row(rows++) = T->row(t);
-  const int dropped = int(T->rows() - rows);
+  for (Eigen::Index t = 0; t < T->rows(); ++t) {
+    if (keep[size_t(t)]) {
+      out.kept_inverted += inverted(t);
+      T->row(rows++) = T->row(t);
+    } else {
+      ++(inverted(t) ? out.inverted : out.flat);
+    }
+  }
   T->conservativeResize(rows, 4);
-  return dropped;
+  return out;
 }
 
 }  // namespace unfold

@@ -12,6 +12,14 @@
 
 namespace unfold {
 
+/// What drop_inverted_tets did.
+struct DroppedTets {
+  int inverted = 0;       ///< inverted tets dropped
+  int flat = 0;           ///< upright tets flatter than the bound, dropped
+  int kept_inverted = 0;  ///< inverted tets kept, as the parts need them
+  int dropped() const { return inverted + flat; }
+};
+
 /// Removes the rows of T whose signed volume at `rest` does not have the sign
 /// it has at `made` (count_inverted_tets' test), and those whose quality at
 /// `rest` (tet_quality) is below `min_quality`, except those that joining
@@ -26,11 +34,11 @@ namespace unfold {
 ///        triangles, when the solve has their edges): no tet is put back to join them
 /// @param min_quality tets flatter than this at `rest` are dropped too; 0: only
 ///        inverted ones
-/// @return how many tets were dropped
+/// @return the counts of what was dropped and kept
 /// @throws UsageError if the positions' sizes differ, a corner is out of range or
 ///         min_quality is not in [0, 1]
-int drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
-                       Eigen::MatrixX4i* T, const Eigen::MatrixXi* joined = nullptr,
-                       double min_quality = 0);
+DroppedTets drop_inverted_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
+                               Eigen::MatrixX4i* T, const Eigen::MatrixXi* joined = nullptr,
+                               double min_quality = 0);
 
 }  // namespace unfold

@@ -7,7 +7,6 @@
 #include "mesh/drop_inverted_tets.h"
 #include "mesh/edge_graph.h"
 #include "mesh/sort_interior_vertices.h"
-#include "mesh/tet_volumes.h"
 #include "metrics/pose_invariance.h"
 #include "solvers/arap_solve.h"
 #include "solvers/sparse_ldlt.h"
@@ -85,13 +84,12 @@ UnfoldedTetMesh tetrahedralize_unfolded(const SurfaceMesh& input, const Eigen::M
   // have no rest shape either: a small turn of a corner flips them
   // (options.unfolded_min_quality; docs/method.md, detail).
   const Eigen::MatrixXi surface_edges = Eigen::MatrixXi(F);
-  const int inverted = count_inverted_tets(tets.V, X, tets.T);
-  const int dropped =
+  const DroppedTets dropped =
       drop_inverted_tets(tets.V, X, &tets.T, surface_edges_join ? &surface_edges : nullptr,
                          options.unfolded_min_quality);
-  out.report.inverted_rest_tets = count_inverted_tets(tets.V, X, tets.T);
-  out.report.dropped_inverted_tets = inverted - out.report.inverted_rest_tets;
-  out.report.dropped_flat_tets = dropped - out.report.dropped_inverted_tets;
+  out.report.inverted_rest_tets = dropped.kept_inverted;
+  out.report.dropped_inverted_tets = dropped.inverted;
+  out.report.dropped_flat_tets = dropped.flat;
   out.report.num_tets = int(tets.T.rows());
   out.unfolded = std::move(tets.V);
   out.rest = std::move(tets);

@@ -43,7 +43,7 @@ TEST(DropInvertedTets, KeepsEveryTetWhereNoneIsInverted) {
   const TetMesh grid = test::grid_tet_mesh(3, 3, 3);
   Eigen::MatrixX4i T = grid.T;
   const Eigen::MatrixX3d moved = 2.0 * grid.V * test::random_rotation(3).transpose();
-  EXPECT_EQ(drop_inverted_tets(grid.V, moved, &T), 0);
+  EXPECT_EQ(drop_inverted_tets(grid.V, moved, &T).dropped(), 0);
   EXPECT_EQ(T, grid.T);
 }
 
@@ -56,7 +56,10 @@ TEST(DropInvertedTets, KeepsInvertedTetsTheMeshNeedsConnected) {
   T << 0, 1, 2, 3, 0, 1, 2, 3, 1, 2, 3, 4;
   Eigen::MatrixX3d mirrored = P;
   mirrored.col(0) *= -1;
-  EXPECT_EQ(drop_inverted_tets(P, mirrored, &T), 1);
+  const DroppedTets dropped = drop_inverted_tets(P, mirrored, &T);
+  EXPECT_EQ(dropped.inverted, 1);
+  EXPECT_EQ(dropped.flat, 0);
+  EXPECT_EQ(dropped.kept_inverted, 2);
   Eigen::MatrixX4i expected(2, 4);
   expected << 0, 1, 2, 3, 1, 2, 3, 4;
   EXPECT_EQ(T, expected);
@@ -74,10 +77,13 @@ TEST(DropInvertedTets, DropsOnlyInvertedTetsAndKeepsTheParts) {
   const int inverted = count_inverted_tets(grid.V, shaken, grid.T);
   ASSERT_GT(inverted, grid.T.rows() / 20);
   Eigen::MatrixX4i T = grid.T;
-  const int dropped = drop_inverted_tets(grid.V, shaken, &T);
+  const DroppedTets counts = drop_inverted_tets(grid.V, shaken, &T);
+  const int dropped = counts.dropped();
+  EXPECT_EQ(counts.flat, 0);
   EXPECT_EQ(T.rows() + dropped, grid.T.rows());
   EXPECT_GT(dropped, 0);
   EXPECT_EQ(count_inverted_tets(grid.V, shaken, T), inverted - dropped);
+  EXPECT_EQ(counts.kept_inverted, inverted - dropped);
   const int n = int(grid.V.rows());
   EXPECT_TRUE(same_parts(parts(n, T), parts(n, grid.T)));
   // Each inverted tet left over is needed: without it the parts change.
@@ -102,7 +108,7 @@ TEST(DropInvertedTets, DropsFlatTetsWithAQualityBound) {
   for (Eigen::Index i = 0; i < pressed.rows(); ++i)
     if (std::abs(grid.V(i, 2) - middle) < 1e-9) pressed(i, 2) = low + 0.01 * (middle - low);
   Eigen::MatrixX4i T = grid.T;
-  EXPECT_EQ(drop_inverted_tets(grid.V, pressed, &T, nullptr, 0.0), 0);
+  EXPECT_EQ(drop_inverted_tets(grid.V, pressed, &T, nullptr, 0.0).dropped(), 0);
   const double bound = 0.1;
   const Eigen::VectorXd q = tet_quality(pressed, grid.T);
   int flat = 0;
@@ -110,7 +116,9 @@ TEST(DropInvertedTets, DropsFlatTetsWithAQualityBound) {
   ASSERT_GT(flat, 0);
   ASSERT_LT(flat, grid.T.rows());
   T = grid.T;
-  const int dropped = drop_inverted_tets(grid.V, pressed, &T, nullptr, bound);
+  const DroppedTets counts = drop_inverted_tets(grid.V, pressed, &T, nullptr, bound);
+  EXPECT_EQ(counts.inverted, 0);
+  const int dropped = counts.flat;
   EXPECT_GT(dropped, 0);
   EXPECT_LE(dropped, flat);
   EXPECT_EQ(T.rows() + dropped, grid.T.rows());
