@@ -32,10 +32,10 @@ void check_edge_factors(const EdgeGraph& graph, const ArapSolveOptions& options,
                      std::to_string(graph.num_edges()) + "), got " + std::to_string(f.size()));
 }
 
-// Per edge of the graph: 1, or 1 / rest length scaled to mean 1; times the
-// options' edge factors, if any.
-std::vector<double> edge_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                 const ArapSolveOptions& options) {
+// Per edge of the graph: 1, or 1 / rest length scaled to mean 1 (the mesh's own
+// stiffness, before any edge factors).
+std::vector<double> length_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                   const ArapSolveOptions& options) {
   std::vector<double> w(size_t(graph.num_edges()), 1.0);
   if (options.inverse_length_weights && graph.num_edges() > 0) {
     double sum = 0;
@@ -47,19 +47,20 @@ std::vector<double> edge_weights(const EdgeGraph& graph, const Eigen::MatrixX3d&
     }
     for (double& x : w) x *= graph.num_edges() / sum;
   }
-  for (size_t e = 0; e < options.edge_factors.size(); ++e) w[e] *= options.edge_factors[e];
   return w;
 }
 
-// arap_anchor_weights (m >= 0 free rows).
+// The steps' weights: the length weights times the options' edge factors, if any.
+void apply_edge_factors(const ArapSolveOptions& options, std::vector<double>* w) {
+  for (size_t e = 0; e < options.edge_factors.size(); ++e) (*w)[e] *= options.edge_factors[e];
+}
+
+// arap_anchor_weights (m >= 0 free rows), w the length weights.
 Eigen::VectorXd anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                               const ArapSolveOptions& options) {
+                               const std::vector<double>& w, const ArapSolveOptions& options) {
   const int m = graph.num_vertices - options.num_fixed;
   Eigen::VectorXd a = Eigen::VectorXd::Constant(m, options.anchor);
   if (!options.anchor_by_stiffness || m == 0) return a;
-  ArapSolveOptions unfactored = options;
-  unfactored.edge_factors.clear();
-  const std::vector<double> w = edge_weights(graph, P, unfactored);
   Eigen::VectorXd k = Eigen::VectorXd::Zero(m);
   for (int i = options.num_fixed; i < graph.num_vertices; ++i)
     for (int j = graph.offsets[size_t(i)]; j < graph.offsets[size_t(i) + 1]; ++j)
@@ -128,8 +129,10 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
     throw UsageError(
         "arap_factorization: need P with one row per graph vertex and 1 to n - 1 held");
   check_edge_factors(graph, options, "arap_factorization");
-  const std::vector<double> weights = edge_weights(graph, P, options);
-  return factorize_free_block(graph, weights, anchor_weights(graph, P, options), options);
+  std::vector<double> weights = length_weights(graph, P, options);
+  const Eigen::VectorXd anchor = anchor_weights(graph, P, weights, options);
+  apply_edge_factors(options, &weights);
+  return factorize_free_block(graph, weights, anchor, options);
 }
 
 Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
@@ -138,7 +141,7 @@ Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX
   if (P.rows() != n || options.num_fixed < 1 || options.num_fixed > n)
     throw UsageError("arap_anchor_weights: need P with one row per graph vertex and 1 to n held");
   check_edge_factors(graph, options, "arap_anchor_weights");
-  return anchor_weights(graph, P, options);
+  return anchor_weights(graph, P, length_weights(graph, P, options), options);
 }
 
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
@@ -153,8 +156,9 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
   report_stage("ARAP steps, " + std::to_string(m) + " free vertices" +
                (options.anchor > 0 ? ", anchored" : ""));
-  const std::vector<double> weights = edge_weights(graph, P, options);
-  const Eigen::VectorXd anchor = anchor_weights(graph, P, options);
+  std::vector<double> weights = length_weights(graph, P, options);
+  const Eigen::VectorXd anchor = anchor_weights(graph, P, weights, options);
+  apply_edge_factors(options, &weights);
   std::unique_ptr<SparseLdlt> own;
   if (!factor) {
     own = factorize_free_block(graph, weights, anchor, options);
