@@ -71,6 +71,13 @@
     "length along the edge (the input's joints straighten, docs/method.md); 0: off")               \
   X(soften_floor, "soften.floor", soften.floor,                                                    \
     "soften.scale: no edge's weight factor below this (in (0, 1])")                                \
+  X(soften_filter, "soften.filter", soften.filter,                                                 \
+    "soften.scale: the second solve's change from the first, its rotations low-pass filtered at "  \
+    "this length times sqrt(area): joints straighten, faces are not squashed (docs/method.md, "    \
+    "soft joints); 0: kept whole")                                                                 \
+  X(soften_filter_stretch, "soften.filter_stretch", soften.filter_stretch,                         \
+    "soften.scale: the same change's stretch (the rest of it) filtered at this length times "      \
+    "sqrt(area); 0: kept whole")                                                                   \
   X(beta_mode, "beta.mode", beta_mode,                                                             \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                            \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                               \

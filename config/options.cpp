@@ -181,6 +181,9 @@ Options::Options() {
   integrate.anchor_weights = "stiffness";
   integrate.surface_edges = 0.25;
   soften.scale = 2.0;
+  soften.filter = 0.03;
+  soften.filter_stretch = 0.09;
+  integrate.pose_pull = 0.1;
   energy.stretch_masses = "lumped";
 }
 
@@ -286,6 +289,10 @@ void validate_options(const Options& o) {
   require(std::isfinite(o.soften.scale) && o.soften.scale >= 0, "soften.scale",
           "must be >= 0 (0 = off)");
   require(o.soften.floor > 0 && o.soften.floor <= 1, "soften.floor", "must be in (0, 1]");
+  require(std::isfinite(o.soften.filter) && o.soften.filter >= 0, "soften.filter",
+          "must be a finite number >= 0 (0 = kept whole)");
+  require(std::isfinite(o.soften.filter_stretch) && o.soften.filter_stretch >= 0,
+          "soften.filter_stretch", "must be a finite number >= 0 (0 = kept whole)");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
   require(std::isfinite(o.integrate.surface_edges) && o.integrate.surface_edges >= 0,
@@ -294,10 +301,6 @@ void validate_options(const Options& o) {
           "must be a finite number >= 0");
   require(o.integrate.pose_pull >= 0 && o.integrate.pose_pull <= 1, "integrate.pose_pull",
           "must be in [0, 1] (0 = off)");
-  require(o.integrate.pose_pull == 0 || (o.integrate.iterations >= 2 && o.integrate.anchor > 0),
-          "integrate.pose_pull",
-          "needs the anchored steps that filter it: integrate.iterations >= 2 and "
-          "integrate.anchor > 0");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

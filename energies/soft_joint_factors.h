@@ -18,6 +18,12 @@ struct SoftenOptions {
   /// solution's rotation field per unit rest length along it; 0: off (the paper)
   double scale = 0;
   double floor = 0.4;  ///< no factor below this, in (0, 1]: a soft edge never lets go
+  /// the second solve's change from the first kept at the scale of limbs
+  /// (solvers/filter_change.h): its rotations filtered at this length, in units
+  /// of sqrt(surface area); 0: whole
+  double filter = 0;
+  /// ... and the rest of it (stretch) at this length; 0: whole
+  double filter_stretch = 0;
 };
 
 /// Per graph edge ij, the factor its ARAP weight is multiplied by:

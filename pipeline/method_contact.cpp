@@ -20,7 +20,8 @@ Method contact_method(const Options& options) {
       cascade(surface),
   };
   if (softens(options))
-    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
+    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface),
+                     soft_joints_filter(surface)});
   stages.push_back(full_resolution().when(coarse_surface_solve));
   append(&stages,
          {

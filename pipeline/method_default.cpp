@@ -24,7 +24,8 @@ Method default_method(const Options& options) {
     stages.push_back(anchor_unit().when(small_surface).on_the_side(kForkAlongsideThreads));
   append(&stages, {lambda2_and_beta(surface), cascade(surface)});
   if (softens(options))
-    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
+    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface),
+                     soft_joints_filter(surface)});
   stages.push_back(full_resolution().when(coarse_surface_solve));
   if (integrate)
     stages.push_back(anchor_unit().unless(small_surface).on_the_side(kForkAlongsideThreads));

@@ -17,7 +17,9 @@ Method paper_method(const Options& options) {
       lambda2_and_beta(tets),
       cascade(tets),
   };
-  if (softens(options)) append(&stages, {soft_joints_lambda2(tets), soft_joints_cascade(tets)});
+  if (softens(options))
+    append(&stages,
+           {soft_joints_lambda2(tets), soft_joints_cascade(tets), soft_joints_filter(tets)});
   if (integrates(options)) append(&stages, {anchor_unit(), integration(), anchored()});
   stages.push_back(measure());
   return {"paper", stages};

@@ -14,9 +14,11 @@
 #include "mesh/simplify_surface_mesh.h"
 #include "mesh/tet_volumes.h"
 #include "metrics/edge_ratio.h"
+#include "metrics/pose_invariance.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
 #include "solvers/contact_bridges.h"
+#include "solvers/filter_change.h"
 #include "solvers/prolong_surface_solve.h"
 #include "solvers/tetrahedralize_unfolded.h"
 #include "stages/anchor_lambda2.h"
@@ -303,6 +305,20 @@ Stage soft_joints_cascade(CascadeDomain) {
       StagePart::unfold, StageTimer::cascade);
 }
 
+Stage soft_joints_filter(CascadeDomain domain) {
+  return step(
+             "soft joints: filter",
+             [domain](UnfoldState& s) {
+               const double unit = std::sqrt(surface_area(s.mesh.surface));
+               s.result.cascade.positions = filter_change(
+                   domain_graph(s, domain), domain_mesh(s, domain).V, s.first_solution,
+                   s.result.cascade.positions,
+                   {s.options.soften.filter * unit, s.options.soften.filter_stretch * unit});
+             },
+             StagePart::unfold, StageTimer::cascade)
+      .when(filters_soft_joints);
+}
+
 Stage full_resolution() {
   return step(
       "surface: to full resolution",
@@ -509,6 +525,10 @@ bool small_surface(const UnfoldState& state) {
 
 bool softens(const Options& options) {
   return options.soften.scale > 0 && options.energy.arap_weight > 0;
+}
+
+bool filters_soft_joints(const UnfoldState& state) {
+  return state.options.soften.filter > 0 || state.options.soften.filter_stretch > 0;
 }
 
 bool integrates(const Options& options) {

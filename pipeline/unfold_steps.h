@@ -23,6 +23,7 @@ Stage lambda2_and_beta(CascadeDomain domain);     ///< setup_cascade on the doma
 Stage cascade(CascadeDomain domain);              ///< solve_cascade
 Stage soft_joints_lambda2(CascadeDomain domain);  ///< setup_cascade again, the joints softened
 Stage soft_joints_cascade(CascadeDomain domain);  ///< solve_cascade from the first solution
+Stage soft_joints_filter(CascadeDomain domain);   ///< filter_change from the first solution
 Stage full_resolution();       ///< a coarse surface solve carried to every surface vertex
 Stage tets_of_unfolded();      ///< the tets of the surface solve's shape
 Stage given_unfolded_shape();  ///< given tets' unfolded positions in place of tets_of_unfolded
@@ -55,6 +56,8 @@ bool contact(const UnfoldState& state);
 bool small_surface(const UnfoldState& state);
 /// soften.scale > 0 with an ARAP term: the surface solve again, the joints softened
 bool softens(const Options& options);
+/// soften.filter or soften.filter_stretch > 0: the soft joints' change filtered
+bool filters_soft_joints(const UnfoldState& state);
 /// integrate.iterations > 0 for a cascade method (LSMDS has no rotations to
 /// integrate, SCF's ARAP refinement is its own)
 bool integrates(const Options& options);

@@ -29,11 +29,8 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
       !(lambda2 > 0))
     throw UsageError(
         "integrate_rotation_field: iterations, anchor and tolerance must be >= 0, lambda_2 > 0");
-  if (!(options.pose_pull >= 0 && options.pose_pull <= 1) ||
-      (options.pose_pull > 0 && (options.iterations < 2 || !(options.anchor > 0))))
-    throw UsageError(
-        "integrate_rotation_field: pose_pull must be in [0, 1], and above 0 needs anchored "
-        "steps (iterations >= 2, anchor > 0) to filter it");
+  if (!(options.pose_pull >= 0 && options.pose_pull <= 1))
+    throw UsageError("integrate_rotation_field: pose_pull must be in [0, 1]");
   if (options.weights != "uniform" && options.weights != "inverse_length")
     throw UsageError("integrate_rotation_field: weights must be uniform or inverse_length, got '" +
                      options.weights + "'");

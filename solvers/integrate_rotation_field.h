@@ -40,7 +40,8 @@ struct IntegrateOptions {
   /// by the steps' own factor, anchor (L + anchor)^-1, so that Q's pose (its softest
   /// modes) is kept and its inflation and local distortion are not. The integration
   /// alone drifts from Q's pose along the limbs, by as much as the input's local
-  /// shapes differ between poses (docs/method.md, pose pull); 0: off
+  /// shapes differ between poses (docs/method.md, pose pull); 0: off. Without
+  /// anchored steps (iterations < 2 or anchor 0) nothing filters it: no pull.
   double pose_pull = 0;
 };
 
@@ -70,8 +71,7 @@ struct IntegratedRotations {
 /// @param edge_factors optional: per edge of `graph` (its order), a factor of the
 ///        steps' weights (ArapSolveOptions::edge_factors); empty: none
 /// @throws UsageError for mismatched sizes, negative options, unknown weights or
-///         anchor_weights, or a
-///         pose_pull outside [0, 1] or without anchored steps (iterations >= 2, anchor > 0)
+///         anchor_weights, or a pose_pull outside [0, 1]
 IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                         const Eigen::MatrixX3d& Q, double lambda2,
                                         const IntegrateOptions& options,

@@ -120,13 +120,14 @@ TEST(Config, ErrorsNameTheKey) {
   expect_usage_error("soften:\n  scale: -1\n", "'soften.scale' must be >= 0");
   expect_usage_error("soften:\n  floor: 0\n", "'soften.floor' must be in (0, 1]");
   expect_usage_error("soften:\n  floor: 1.5\n", "'soften.floor' must be in (0, 1]");
+  expect_usage_error("soften:\n  filter: -0.1\n", "'soften.filter' must be a finite number >= 0");
+  expect_usage_error("soften:\n  filter_stretch: .inf\n",
+                     "'soften.filter_stretch' must be a finite number >= 0");
   expect_usage_error("integrate:\n  surface_edges: -0.5\n",
                      "'integrate.surface_edges' must be a finite number >= 0");
   expect_usage_error("integrate:\n  surface_edges: .nan\n",
                      "'integrate.surface_edges' must be a finite number >= 0");
   expect_usage_error("integrate:\n  pose_pull: 1.5\n", "'integrate.pose_pull' must be in [0, 1]");
-  expect_usage_error("integrate:\n  pose_pull: 0.2\n  iterations: 1\n",
-                     "'integrate.pose_pull' needs the anchored steps");
   expect_usage_error("stretch:\n  mass_power: 1.5\n",
                      "'stretch.mass_power' must be a number in [0, 1]");
   expect_usage_error("stretch:\n  mass_power: .nan\n", "'stretch.mass_power' must be a number in");

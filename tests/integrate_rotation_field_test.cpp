@@ -105,6 +105,27 @@ TEST(IntegrateRotationField, APosePullFiltersOutTheSolvesNoise) {
   }
 }
 
+// The pull acts through the anchored steps' filter: with no anchored steps
+// (one step, or no anchor) there is none, and the result is the pull-free one.
+TEST(IntegrateRotationField, APosePullWithoutAnchoredStepsIsNoPull) {
+  const Grid g;
+  const Eigen::MatrixX3d Q = 1.5 * g.mesh.V + 0.3 * Eigen::MatrixX3d::Random(g.mesh.V.rows(), 3);
+  IntegrateOptions unanchored = pulled(6, 0.5);
+  unanchored.anchor = 0;
+  for (IntegrateOptions options : {pulled(1, 0.5), unanchored}) {
+    const Eigen::MatrixX3d pulled_x =
+        integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, options);
+    options.pose_pull = 0;
+    const Eigen::MatrixX3d x = integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, options);
+    EXPECT_EQ((pulled_x - x).cwiseAbs().maxCoeff(), 0.0);
+  }
+  // With anchored steps the same pull moves the result.
+  const Eigen::MatrixX3d pulled_x =
+      integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, pulled(6, 0.5));
+  const Eigen::MatrixX3d x = integrate_rotation_field(g.graph, g.mesh.V, Q, g.lambda2, steps(6));
+  EXPECT_GT((pulled_x - x).cwiseAbs().maxCoeff(), 1e-3);
+}
+
 TEST(IntegrateRotationField, TurnsWithItsInput) {
   const Grid g;
   Eigen::MatrixX3d Q = g.mesh.V + 0.3 * Eigen::MatrixX3d::Random(g.mesh.V.rows(), 3);
@@ -133,12 +154,6 @@ TEST(IntegrateRotationField, RefusesBadOptions) {
                UsageError);
   IntegrateOptions pull = steps(2);
   pull.pose_pull = 1.5;
-  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, pull), UsageError);
-  pull.pose_pull = 0.5;
-  pull.anchor = 0;  // nothing to filter the pull with
-  EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, pull), UsageError);
-  pull = steps(1);
-  pull.pose_pull = 0.5;
   EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, pull), UsageError);
 }
 

@@ -1,0 +1,112 @@
+#include "solvers/filter_change.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+#include <cmath>
+#include <vector>
+
+#include "core/errors.h"
+#include "mesh/best_rotations.h"
+#include "solvers/sparse_ldlt.h"
+
+namespace unfold {
+
+namespace {
+
+// The rebuild's Laplacian shifted by this times I: fixes the mean (to S2's,
+// through the right side) and nothing else that counts.
+constexpr double kShift = 1e-8;
+
+// diagonal + sum over edges of w_e (e_i - e_j)(e_i - e_j)^T: every matrix here
+// has this one pattern, so one symbolic analysis serves them all.
+Eigen::SparseMatrix<double> laplacian_plus(const EdgeGraph& graph, const Eigen::VectorXd& w,
+                                           double diagonal) {
+  const int n = graph.num_vertices;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(size_t(4 * graph.num_edges() + n));
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    const int i = graph.edges(e, 0), j = graph.edges(e, 1);
+    entries.insert(entries.end(), {{i, j, -w[e]}, {j, i, -w[e]}, {i, i, w[e]}, {j, j, w[e]}});
+  }
+  for (int i = 0; i < n; ++i) entries.emplace_back(i, i, diagonal);
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  return A;
+}
+
+// (I + l^2 / 1.5 L_P): on a regular triangulation of spacing h, sum_j (f_j -
+// f_i) / h^2 is 1.5 h^2 Laplace(f) / h^2, hence the 1.5.
+Eigen::SparseMatrix<double> filter_matrix(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                          double length) {
+  Eigen::VectorXd squared(graph.num_edges());
+  for (int e = 0; e < graph.num_edges(); ++e)
+    squared[e] = (P.row(graph.edges(e, 0)) - P.row(graph.edges(e, 1))).squaredNorm();
+  // Coinciding ends (clusters of a coarse graph may) weigh as a very short edge.
+  const double floor = 1e-12 * (squared.size() > 0 ? squared.mean() : 0.0);
+  Eigen::VectorXd w(graph.num_edges());
+  for (int e = 0; e < graph.num_edges(); ++e)
+    w[e] = length * length / 1.5 / std::max(squared[e], floor);
+  return laplacian_plus(graph, w, 1.0);
+}
+
+Rotations exponentials(const Eigen::MatrixX3d& omega) {
+  Rotations R(static_cast<size_t>(omega.rows()));
+  for (Eigen::Index i = 0; i < omega.rows(); ++i) {
+    const double angle = omega.row(i).norm();
+    R[size_t(i)] = angle > 0 ? Eigen::AngleAxisd(angle, omega.row(i).transpose() / angle).matrix()
+                             : Eigen::Matrix3d::Identity();
+  }
+  return R;
+}
+
+}  // namespace
+
+Eigen::MatrixX3d filter_change(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                               const Eigen::MatrixX3d& S1, const Eigen::MatrixX3d& S2,
+                               const FilterChangeOptions& options) {
+  const int n = graph.num_vertices;
+  if (P.rows() != n || S1.rows() != n || S2.rows() != n)
+    throw UsageError("filter_change: P, S1 and S2 need one row per graph vertex");
+  for (const double l : {options.rotation_length, options.stretch_length})
+    if (!(l >= 0) || !std::isfinite(l))
+      throw UsageError("filter_change: the lengths must be finite and >= 0");
+  if (options.rotation_length == 0 && options.stretch_length == 0) return S2;
+
+  Rotations D;
+  best_rotations(graph, S1, S2, &D);
+  Eigen::MatrixX3d omega(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::AngleAxisd turn(D[size_t(i)]);
+    omega.row(i) = turn.angle() * turn.axis().transpose();
+  }
+  SparseLdlt solver;
+  solver.analyze(laplacian_plus(graph, Eigen::VectorXd::Ones(graph.num_edges()), kShift));
+  auto filtered = [&](const Eigen::MatrixX3d& f, double length) {
+    if (length == 0) return f;
+    solver.factorize(filter_matrix(graph, P, length));
+    Eigen::MatrixX3d x;
+    solver.solve(f, &x);
+    return x;
+  };
+  const Eigen::MatrixX3d omega_filtered = filtered(omega, options.rotation_length);
+
+  solver.factorize(laplacian_plus(graph, Eigen::VectorXd::Ones(graph.num_edges()), kShift));
+  auto rebuild = [&](const Rotations& R) {
+    Eigen::MatrixX3d b = kShift * S2;
+    for (int e = 0; e < graph.num_edges(); ++e) {
+      const int i = graph.edges(e, 0), j = graph.edges(e, 1);
+      const Eigen::RowVector3d d =
+          (S1.row(i) - S1.row(j)) * (0.5 * (R[size_t(i)] + R[size_t(j)])).transpose();
+      b.row(i) += d;
+      b.row(j) -= d;
+    }
+    Eigen::MatrixX3d x;
+    solver.solve(b, &x);
+    return x;
+  };
+  const Eigen::MatrixX3d turned = rebuild(exponentials(omega_filtered));
+  const Eigen::MatrixX3d stretch = S2 - rebuild(D);
+  return turned + filtered(stretch, options.stretch_length);
+}
+
+}  // namespace unfold
