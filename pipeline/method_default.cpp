@@ -1,8 +1,9 @@
 // The default method (configs/default.yaml; tetrahedralize.shape unfolded, or
 // auto with a route other than conforming): the energy on the surface at low
-// beta, solved to convergence and again with its joints softened; that shape
-// tetrahedralized, its interior put back into the input; the cascade's
-// rotation field integrated on those tets (docs/method.md).
+// beta, solved to convergence and again with its joints softened, that change
+// kept at the scale of limbs; that shape tetrahedralized, its interior put
+// back into the input; the cascade's rotation field integrated on those tets
+// (docs/method.md).
 #include "core/fork_safety.h"
 #include "pipeline/unfold_method.h"
 #include "pipeline/unfold_steps.h"
