@@ -78,6 +78,9 @@
   X(soften_filter_stretch, "soften.filter_stretch", soften.filter_stretch,                         \
     "soften.scale: the same change's stretch (the rest of it) filtered at this length times "      \
     "sqrt(area); 0: kept whole")                                                                   \
+  X(soften_epsilon, "soften.epsilon", soften.epsilon,                                              \
+    "soften.scale: the relative energy change that ends the second solve (its fine scale is "      \
+    "filtered out anyway); 0: cascade.epsilon")                                                    \
   X(beta_mode, "beta.mode", beta_mode,                                                             \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                            \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                               \

@@ -183,6 +183,7 @@ Options::Options() {
   soften.scale = 2.0;
   soften.filter = 0.03;
   soften.filter_stretch = 0.09;
+  soften.epsilon = 1e-6;
   integrate.pose_pull = 0.1;
   energy.stretch_masses = "lumped";
 }
@@ -293,6 +294,8 @@ void validate_options(const Options& o) {
           "must be a finite number >= 0 (0 = kept whole)");
   require(std::isfinite(o.soften.filter_stretch) && o.soften.filter_stretch >= 0,
           "soften.filter_stretch", "must be a finite number >= 0 (0 = kept whole)");
+  require(std::isfinite(o.soften.epsilon) && o.soften.epsilon >= 0, "soften.epsilon",
+          "must be a finite number >= 0 (0 = cascade.epsilon)");
   require(std::isfinite(o.integrate.anchor) && o.integrate.anchor >= 0, "integrate.anchor",
           "must be a finite number >= 0");
   require(std::isfinite(o.integrate.surface_edges) && o.integrate.surface_edges >= 0,

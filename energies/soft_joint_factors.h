@@ -24,6 +24,9 @@ struct SoftenOptions {
   double filter = 0;
   /// ... and the rest of it (stretch) at this length; 0: whole
   double filter_stretch = 0;
+  /// the relative energy change that ends the second solve; 0: cascade.epsilon.
+  /// With the filter its fine scale is dropped anyway, so it may stop sooner.
+  double epsilon = 0;
 };
 
 /// Per graph edge ij, the factor its ARAP weight is multiplied by:

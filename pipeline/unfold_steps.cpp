@@ -297,8 +297,9 @@ Stage soft_joints_cascade(CascadeDomain) {
   return step(
       "soft joints: cascade",
       [](UnfoldState& s) {
-        take_solve(s.result,
-                   solve_cascade(std::move(s.setup), s.options.cascade, &s.first_solution));
+        CascadeOptions cascade = s.options.cascade;
+        if (s.options.soften.epsilon > 0) cascade.epsilon = s.options.soften.epsilon;
+        take_solve(s.result, solve_cascade(std::move(s.setup), cascade, &s.first_solution));
         LOG(INFO) << "soft joints: " << s.first_iterations << " iterations, then "
                   << s.result.cascade.iterations << " with the joints softened";
       },

@@ -196,6 +196,18 @@ TEST(PipelineSurfaceDomain, UnfoldsTheSurfaceAndPlacesTheInterior) {
   EXPECT_LT(r.metrics.E_rig, 1.5);
 }
 
+// soften.epsilon ends the second (soft joints') solve: looser, it stops sooner.
+TEST(PipelineSoftJoints, TheSecondSolveEndsAtItsOwnEpsilon) {
+  const SurfaceMesh a = make_articulated_shape(ShapePose::preset(1));
+  Options tight;
+  tight.soften.epsilon = 0;  // cascade.epsilon, 1e-7
+  Options loose = tight;
+  loose.soften.epsilon = 1e-4;
+  const UnfoldResult t = unfold_surface(a, tight), l = unfold_surface(a, loose);
+  EXPECT_GE(l.cascade.iterations, 1);
+  EXPECT_LT(l.cascade.iterations, t.cascade.iterations);
+}
+
 TEST(PipelineInput, RefusesAnOpenSurface) {
   SurfaceMesh open = test::octahedron();
   open.faces.pop_back();
