@@ -123,7 +123,8 @@ TEST(Config, ErrorsNameTheKey) {
   expect_usage_error("soften:\n  filter: -0.1\n", "'soften.filter' must be a finite number >= 0");
   expect_usage_error("soften:\n  filter_stretch: .inf\n",
                      "'soften.filter_stretch' must be a finite number >= 0");
-  expect_usage_error("soften:\n  epsilon: -1e-6\n", "'soften.epsilon' must be a finite number >= 0");
+  expect_usage_error("soften:\n  epsilon: -1e-6\n",
+                     "'soften.epsilon' must be a finite number >= 0");
   expect_usage_error("integrate:\n  surface_edges: -0.5\n",
                      "'integrate.surface_edges' must be a finite number >= 0");
   expect_usage_error("integrate:\n  surface_edges: .nan\n",
