@@ -34,14 +34,14 @@ double stage_seconds_sum(const std::vector<StageTime>& times,
 TEST(MethodStages, TheDefaultConfigListsTheDefaultsStages) {
   const Method m = choose_method(load_options(kStageConfigs + "default.yaml"));
   EXPECT_EQ(m.name, "default");
-  EXPECT_EQ(stage_names(m.stages),
-            (std::vector<std::string>{
-                "check and simplify", "tetrahedralize the input", "integration: anchor lambda_2",
-                "surface: lambda_2 and beta", "surface: cascade", "soft joints: lambda_2 and beta",
-                "soft joints: cascade", "soft joints: filter", "surface: to full resolution",
-                "integration: anchor lambda_2", "tets of the unfolded shape",
-                "given tets' unfolded shape", "edges", "interior placement", "integration",
-                "anchored steps", "metrics"}));
+  EXPECT_EQ(
+      stage_names(m.stages),
+      (std::vector<std::string>{
+          "check and simplify", "tetrahedralize the input", "integration: anchor lambda_2",
+          "surface: lambda_2 and beta", "surface: cascade", "soft joints: lambda_2 and beta",
+          "soft joints: cascade", "integration: anchor lambda_2", "soft joints: filter",
+          "surface: to full resolution", "tets of the unfolded shape", "given tets' unfolded shape",
+          "edges", "interior placement", "integration", "anchored steps", "metrics"}));
 }
 
 TEST(MethodStages, ThePaperConfigListsThePapersStages) {

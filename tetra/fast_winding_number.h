@@ -58,7 +58,8 @@ struct ClassifyOptions {
 /// the tree's accuracy. Elsewhere the coarse value is kept: it differs from the
 /// tree-accuracy one by at most 0.164 over the 1.9 million queries of the
 /// twelve robust-route meshes of ../shared/data (docs/history/performance.md), so it is
-/// on the same side of 1/2.
+/// on the same side of 1/2, and within `margin` of the tree-accuracy value
+/// (the robust route's rescue counts on both).
 Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const Eigen::MatrixX3d& Q,
                                              const ClassifyOptions& options = {});

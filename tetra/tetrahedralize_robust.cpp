@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <vector>
 
@@ -239,13 +240,31 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
         orientation * fast_winding_number_solve(tree, ranked_centroids);
     for (size_t k = 0; k < ranked.size(); ++k) w(ranked[k]) = accurate(Eigen::Index(k));
   };
-  std::vector<int> ranked;  // the tets of the vertices in no kept tet
+  // Only the tets that can be the most inside of a vertex in no kept tet need
+  // the accurate w. classify refined every coarse w within its margin of 1/2,
+  // so a w in that band is accurate already; any other is within the margin of
+  // its accurate value (classify's contract). A tet whose w plus that error is
+  // below another's w minus its error cannot be the most inside: david0's
+  // 55,800 tets ranked -> 33,404 (0.36 -> 0.24 s), the same tets picked.
+  const double margin = ClassifyOptions{}.margin;
+  const auto error = [&](double x) { return std::abs(std::abs(x) - 0.5) < margin ? 0.0 : margin; };
+  std::vector<double> surely(size_t(n), -std::numeric_limits<double>::infinity());
   for (int t = 0; t < num_delaunay; ++t)
-    for (int k = 0; k < 4; ++k)
-      if (T(t, k) < n && !used[size_t(T(t, k))]) {
+    for (int k = 0; k < 4; ++k) {
+      const int v = T(t, k);
+      if (v < n && !used[size_t(v)] && !degenerate[size_t(t)])
+        surely[size_t(v)] = std::max(surely[size_t(v)], w(t) - error(w(t)));
+    }
+  std::vector<int> ranked;  // those tets, where their w is the coarse one
+  for (int t = 0; t < num_delaunay; ++t)
+    for (int k = 0; k < 4; ++k) {
+      const int v = T(t, k);
+      if (v < n && !used[size_t(v)] && !degenerate[size_t(t)] && error(w(t)) > 0 &&
+          w(t) + error(w(t)) >= surely[size_t(v)]) {
         ranked.push_back(t);
         break;
       }
+    }
   make_accurate(ranked);
   for (int t = 0; t < num_delaunay; ++t)
     for (int k = 0; k < 4; ++k) {
