@@ -3,9 +3,11 @@
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "core/errors.h"
+#include "energies/arap_energy.h"
 #include "mesh/best_rotations.h"
 #include "solvers/sparse_ldlt.h"
 
@@ -34,19 +36,14 @@ Eigen::SparseMatrix<double> laplacian_plus(const EdgeGraph& graph, const Eigen::
   return A;
 }
 
-// (I + l^2 / 1.5 L_P): on a regular triangulation of spacing h, sum_j (f_j -
-// f_i) / h^2 is 1.5 h^2 Laplace(f) / h^2, hence the 1.5.
-Eigen::SparseMatrix<double> filter_matrix(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                          double length) {
+// L_P's weights, 1 / |p_i - p_j|^2 per edge.
+Eigen::VectorXd inverse_squared_lengths(const EdgeGraph& graph, const Eigen::MatrixX3d& P) {
   Eigen::VectorXd squared(graph.num_edges());
   for (int e = 0; e < graph.num_edges(); ++e)
     squared[e] = (P.row(graph.edges(e, 0)) - P.row(graph.edges(e, 1))).squaredNorm();
   // Coinciding ends (clusters of a coarse graph may) weigh as a very short edge.
   const double floor = 1e-12 * (squared.size() > 0 ? squared.mean() : 0.0);
-  Eigen::VectorXd w(graph.num_edges());
-  for (int e = 0; e < graph.num_edges(); ++e)
-    w[e] = length * length / 1.5 / std::max(squared[e], floor);
-  return laplacian_plus(graph, w, 1.0);
+  return squared.cwiseMax(floor).cwiseInverse();
 }
 
 Rotations exponentials(const Eigen::MatrixX3d& omega) {
@@ -79,27 +76,31 @@ Eigen::MatrixX3d filter_change(const EdgeGraph& graph, const Eigen::MatrixX3d& P
     const Eigen::AngleAxisd turn(D[size_t(i)]);
     omega.row(i) = turn.angle() * turn.axis().transpose();
   }
+  const Eigen::SparseMatrix<double> L =
+      laplacian_plus(graph, Eigen::VectorXd::Ones(graph.num_edges()), kShift);
   SparseLdlt solver;
-  solver.analyze(laplacian_plus(graph, Eigen::VectorXd::Ones(graph.num_edges()), kShift));
+  solver.analyze(L);
+  const Eigen::VectorXd inverse_squared = inverse_squared_lengths(graph, P);
+  // F = (I + l^2 / 1.5 L_P)^-1: on a regular triangulation of spacing h,
+  // sum_j (f_j - f_i) / h^2 is 1.5 Laplace(f), hence the 1.5.
   auto filtered = [&](const Eigen::MatrixX3d& f, double length) {
     if (length == 0) return f;
-    solver.factorize(filter_matrix(graph, P, length));
+    solver.factorize(laplacian_plus(graph, length * length / 1.5 * inverse_squared, 1.0));
     Eigen::MatrixX3d x;
     solver.solve(f, &x);
     return x;
   };
   const Eigen::MatrixX3d omega_filtered = filtered(omega, options.rotation_length);
 
-  solver.factorize(laplacian_plus(graph, Eigen::VectorXd::Ones(graph.num_edges()), kShift));
+  solver.factorize(L);
+  // The ARAP term at rest S1 (uniform weights) gives the right side,
+  // sum_j (R_i + R_j)/2 (s1_i - s1_j); it reads the graph only within this call.
+  const ArapEnergy arap(
+      std::shared_ptr<const EdgeGraph>(std::shared_ptr<const EdgeGraph>(), &graph), S1,
+      std::vector<double>(size_t(graph.num_edges()), 1.0), 1.0);
   auto rebuild = [&](const Rotations& R) {
     Eigen::MatrixX3d b = kShift * S2;
-    for (int e = 0; e < graph.num_edges(); ++e) {
-      const int i = graph.edges(e, 0), j = graph.edges(e, 1);
-      const Eigen::RowVector3d d =
-          (S1.row(i) - S1.row(j)) * (0.5 * (R[size_t(i)] + R[size_t(j)])).transpose();
-      b.row(i) += d;
-      b.row(j) -= d;
-    }
+    arap.add_linear(R, 0.5, &b);
     Eigen::MatrixX3d x;
     solver.solve(b, &x);
     return x;
