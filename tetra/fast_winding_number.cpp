@@ -254,7 +254,7 @@ Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
   solve_rows<true>(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
   std::vector<int> uncertain;
   for (int i : order)
-    if (std::abs(std::abs(w(i)) - 0.5) < options.margin) uncertain.push_back(i);
+    if (classify_refines(w(i), options)) uncertain.push_back(i);
   solve_rows(tree, Q, uncertain, tree.accuracy, &w);
   return w;
 }

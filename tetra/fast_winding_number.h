@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <vector>
 
 namespace unfold {
@@ -63,6 +64,13 @@ struct ClassifyOptions {
 Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const Eigen::MatrixX3d& Q,
                                              const ClassifyOptions& options = {});
+
+/// Whether fast_winding_number_classify evaluates a coarse value w again at the
+/// tree's accuracy (|w| within `margin` of 1/2): its values in that band are
+/// the accurate ones, the others within `margin` of them.
+inline bool classify_refines(double w, const ClassifyOptions& options = {}) {
+  return std::abs(std::abs(w) - 0.5) < options.margin;
+}
 
 /// Exact winding numbers at the rows of Q (sum over every triangle), for checks.
 Eigen::VectorXd winding_number(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
