@@ -59,10 +59,13 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov) {
 }
 
 Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d& guess) {
-  // R maximises tr(R^T M) with M = cov^T, i.e. Y = R^T M must be symmetric
-  // positive definite. Writing R <- R exp([w]x) and linearising the symmetry of
-  // exp(-[w]x) Y gives (tr(S) I - S) w = 2 a, with S and [a]x the symmetric and
-  // skew parts of Y. The update is applied by the Cayley map, which agrees with
+  // R maximises tr(R^T M) with M = cov^T: Y = R^T M is symmetric there, and
+  // since tr(Y exp([w]x)) = tr(Y) + 2 a.w - w^T G w / 2 + ..., G = tr(S) I - S,
+  // the maximum is the critical point where G is positive definite (at every
+  // other one Y has two negative eigenvalues, or one not on the weakest
+  // direction, and G is not). Writing R <- R exp([w]x) and linearising the
+  // symmetry of exp(-[w]x) Y gives G w = 2 a, with S and [a]x the symmetric
+  // and skew parts of Y. The update is applied by the Cayley map, which agrees with
   // exp to first order (enough for Newton) and is exactly orthogonal. Written
   // out on scalars: this runs for every cell in every iteration.
   const Eigen::Matrix3d M = cov.transpose();
@@ -96,11 +99,10 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d&
     R = R * U;
     if (step < 2.5e-13) {
       // |w| < 1e-6: R is now exact to ~|w|^2. It is the maximiser, not another
-      // critical point, iff S is positive definite (Sylvester's criterion).
-      const double minor2 = s00 * s11 - s01 * s01;
-      const double minor3 = s00 * (s11 * s22 - s12 * s12) - s01 * (s01 * s22 - s12 * s02) +
-                            s02 * (s01 * s12 - s11 * s02);
-      if (s00 > 0 && minor2 > 0 && minor3 > 0) return R;
+      // critical point, iff G is positive definite (Sylvester's criterion: its
+      // determinant is positive already). S need not be: a flat cell's S is
+      // singular, and a reflected one's has its weakest direction negative.
+      if (g00 > 0 && c22 > 0) return R;
       break;
     }
   }

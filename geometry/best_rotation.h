@@ -16,9 +16,10 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov);
 
 /// The same rotation, refined from a nearby guess (the cell's rotation one
 /// iteration earlier) by Newton's method on the rotation group: quadratic
-/// convergence, so one to three cheap steps where the guess is close; far
-/// guesses and ill-conditioned cells go to best_rotation(cov). Agrees with it
-/// to about 1e-12.
+/// convergence, so one to three cheap steps where the guess is close, flat
+/// (rank 2) and reflected (det(cov) < 0) cells included; far guesses and
+/// degenerate cells (the weakest two singular values alike) go to
+/// best_rotation(cov). Agrees with it to about 1e-12.
 /// @param guess a rotation
 Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d& guess);
 

@@ -20,18 +20,20 @@ inline double fast_atan2(double y, double x) {
       0.99999999992930244,  -0.33333331290885149,  0.19999901102156251,   -0.14283813257109715,
       0.11091922983234306,  -0.089741720766549321, 0.072282787413693456,  -0.053956688586216231,
       0.033826229014569734, -0.015828330421451632, 0.0047324874515955644, -0.00066339604867001367};
+  // Every operation unconditional, every choice a select: the octant is as
+  // good as random from one triangle to the next (a branch on it would be
+  // mispredicted half the time), and a loop over this vectorizes.
   const double ax = std::abs(x), ay = std::abs(y);
   const bool steep = ay > ax;
   const double high = steep ? ay : ax, low = steep ? ax : ay;
-  const double t = high > 0 ? low / high : 0;
+  const double t = low / (high > 0 ? high : 1.0);  // 0 / 1 at the origin
   const double s = t * t, s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
   const double p = (a[0] + a[1] * s) + (a[2] + a[3] * s) * s2 +
                    ((a[4] + a[5] * s) + (a[6] + a[7] * s) * s2) * s4 +
                    ((a[8] + a[9] * s) + (a[10] + a[11] * s) * s2) * s8;
-  // Selects rather than branches: the octant is as good as random from one
-  // triangle to the next, so branches on it would be mispredicted half the time.
-  const double first = steep ? M_PI / 2 - t * p : t * p;
-  const double half = std::copysign(first, x) + (std::signbit(x) ? M_PI : 0.0);
+  const double atan_t = t * p, complement = M_PI / 2 - atan_t;
+  const double first = steep ? complement : atan_t;
+  const double half = std::copysign(first, x) + (std::copysign(1.0, x) < 0 ? M_PI : 0.0);
   return std::copysign(half, y);
 }
 

@@ -64,6 +64,36 @@ TEST(SolverRotation, RefinedFromAGuessAgreesWithTheColdFit) {
   }
 }
 
+// cov = H R0^T with H symmetric of eigenvalues 3, 1 and `weakest` along random
+// axes: 0 is a flat cell (all its edges in a plane), below 0 a reflected one.
+// The best rotation is still R0 (Y = H, G = tr(H) I - H positive definite).
+TEST(SolverRotation, FlatAndReflectedCellsFromAGuessOrAtAnotherCriticalPoint) {
+  for (const double weakest : {0.0, -0.2, 1e-9}) {
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+      const Eigen::Matrix3d R0 = test::random_rotation(seed);
+      const Eigen::Matrix3d Q = test::random_rotation(seed + 50);
+      const Eigen::Matrix3d H = Q * Eigen::Vector3d(3, 1, weakest).asDiagonal() * Q.transpose();
+      const Eigen::Matrix3d cov = H * R0.transpose();
+      ASSERT_LT((best_rotation(cov) - R0).norm(), 1e-12) << "weakest " << weakest;
+      for (const double angle : {1e-4, 0.05, 0.4}) {
+        const Eigen::Matrix3d turn =
+            Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, -1).normalized()).toRotationMatrix();
+        EXPECT_LT((best_rotation(cov, R0 * turn) - R0).norm(), 1e-11)
+            << "weakest " << weakest << ", seed " << seed << ", guess " << angle << " rad off";
+      }
+      // The other critical points, R0 turned by pi about a principal axis: Y
+      // is symmetric there too, but G is not positive definite.
+      for (int axis = 0; axis < 3; ++axis) {
+        Eigen::Vector3d flip = -Eigen::Vector3d::Ones();
+        flip(axis) = 1;
+        const Eigen::Matrix3d critical = R0 * Q * flip.asDiagonal() * Q.transpose();
+        EXPECT_LT((best_rotation(cov, critical) - R0).norm(), 1e-11)
+            << "weakest " << weakest << ", seed " << seed << ", axis " << axis;
+      }
+    }
+  }
+}
+
 TEST(SolverFiedler, MatchesDenseEigenvalues) {
   const TetMesh mesh = test::grid_tet_mesh(5, 3, 2);
   const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);

@@ -13,13 +13,11 @@ namespace {
 // Signed solid angle of triangle (a, b, c) seen from q (Van Oosterom and
 // Strackee 1983); positive when q is behind the triangle's normal.
 // x, y, z: the corners relative to q; lx, ly, lz: their lengths.
-// Fast: fast_atan2 instead of std::atan2 (within kFastAtan2Error).
-template <bool Fast = false>
 double solid_angle(const Eigen::Vector3d& x, const Eigen::Vector3d& y, const Eigen::Vector3d& z,
                    double lx, double ly, double lz) {
   const double numerator = x.dot(y.cross(z));
   const double denominator = lx * ly * lz + x.dot(y) * lz + y.dot(z) * lx + z.dot(x) * ly;
-  return 2 * (Fast ? fast_atan2(numerator, denominator) : std::atan2(numerator, denominator));
+  return 2 * std::atan2(numerator, denominator);
 }
 
 double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
@@ -149,17 +147,20 @@ namespace {
 constexpr int kPacket = 8;  // queries traversing the tree together
 
 // Winding numbers at q[0, count), count <= kPacket: clusters farther than
-// accuracy * radius by their dipole. The queries go down the tree together, a
-// query leaving the walk where its cluster is far, so that each node's far
-// field (a square root and a division per query, most of the walk) is
-// computed for all of them at once in vector registers: the carve of a 62k-vertex
-// human 0.68 -> 0.60 s (docs/history/performance.md). Each query meets the nodes it
-// meets alone, in the same order, so its sum is the one-query walk's bit for bit.
-template <bool Fast>
-void winding_numbers_at(const FastWindingNumberTree& tree, const Eigen::Vector3d* q, int count,
-                        double accuracy, double* w) {
-  double sum[kPacket] = {};
-  Eigen::Array<double, kPacket, 1> qx, qy, qz;  // lanes past count repeat the last query
+// accuracy * radius by their dipole, the near leaves' triangles summed with
+// fast_atan2. The queries go down the tree together, a query leaving the walk
+// where its cluster is far, and each node's far field and each leaf's
+// triangles are computed for all of them at once: every loop over the
+// packet's lanes is branch-free (inactive lanes computed, their terms not
+// added), so GCC vectorizes it, two lanes per SSE2 instruction and four in
+// the AVX2 clone, picked at load time where the CPU has it (david0's carve
+// 1.11 -> 0.77 s, docs/performance.md). Each query meets the nodes it meets
+// alone, in the same order, so its sum is the one-query walk's bit for bit.
+__attribute__((target_clones("avx2", "default"))) void winding_numbers_at(
+    const FastWindingNumberTree& tree, const Eigen::Vector3d* q, int count, double accuracy,
+    double* w) {
+  alignas(64) double sum[kPacket] = {};
+  alignas(64) double qx[kPacket], qy[kPacket], qz[kPacket];  // lanes past count repeat the last
   for (int k = 0; k < kPacket; ++k) {
     const Eigen::Vector3d& p = q[std::min(k, count - 1)];
     qx[k] = p.x(), qy[k] = p.y(), qz[k] = p.z();
@@ -174,43 +175,58 @@ void winding_numbers_at(const FastWindingNumberTree& tree, const Eigen::Vector3d
   while (size > 0) {
     const Entry entry = stack[--size];
     const FastWindingNumberTree::Node& node = tree.nodes[size_t(entry.node)];
-    // Every lane at once (Eigen's packets); inactive lanes are masked below.
-    using Lanes = Eigen::Array<double, kPacket, 1>;
-    const Lanes dx = node.center.x() - qx, dy = node.center.y() - qy, dz = node.center.z() - qz;
-    const Lanes distance = (dx * dx + dy * dy + dz * dz).sqrt();
-    // Far: the cluster acts as a dipole of moment area_normal at center.
-    const Lanes term =
-        (node.area_normal.x() * dx + node.area_normal.y() * dy + node.area_normal.z() * dz) /
-        (distance * distance * distance);
+    const double cx = node.center.x(), cy = node.center.y(), cz = node.center.z();
+    const double nx = node.area_normal.x(), ny = node.area_normal.y(), nz = node.area_normal.z();
     const double reach = accuracy * node.radius;
-    uint32_t open = 0;
-    for (int k = 0; k < count; ++k) {
-      if (!(entry.active >> k & 1)) continue;
-      if (distance[k] > reach)
-        sum[k] += term[k];
-      else
-        open |= 1u << k;
+    // Lane flags as doubles (1 or 0): SSE2 compares and selects those.
+    alignas(64) double active[kPacket], near[kPacket];
+    for (int k = 0; k < kPacket; ++k) active[k] = entry.active >> k & 1;
+#pragma GCC unroll 1  // unrolled first, it would not be vectorized
+    for (int k = 0; k < kPacket; ++k) {
+      // Far: the cluster acts as a dipole of moment area_normal at center.
+      const double dx = cx - qx[k], dy = cy - qy[k], dz = cz - qz[k];
+      const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const double term = (nx * dx + ny * dy + nz * dz) / (distance * distance * distance);
+      const bool far = distance > reach;
+      sum[k] += (active[k] > 0) & far ? term : 0.0;
+      near[k] = (active[k] > 0) & !far ? 1.0 : 0.0;
     }
+    uint32_t open = 0;
+    for (int k = 0; k < kPacket; ++k) open |= uint32_t(near[k] > 0) << k;
     if (open == 0) continue;
-    if (node.left < 0) {
-      for (int k = 0; k < count; ++k) {
-        if (!(open >> k & 1)) continue;
-        // As triangle_solid_angle per triangle, with each corner's offset once.
-        Eigen::Vector3d offset[kMaxLeafPoints];
-        double length[kMaxLeafPoints];
-        for (int p = 0; p < node.num_points; ++p) {
-          offset[p] = tree.points[size_t(node.first_point + p)] - q[k];
-          length[p] = offset[p].norm();
-        }
-        for (int t = node.first; t < node.first + node.count; ++t) {
-          const unsigned char* c = &tree.corners[size_t(3 * t)];
-          sum[k] += solid_angle<Fast>(offset[c[0]], offset[c[1]], offset[c[2]], length[c[0]],
-                                      length[c[1]], length[c[2]]);
-        }
-      }
-    } else {
+    if (node.left >= 0) {
       stack[size++] = {node.left, open};
       stack[size++] = {node.left + 1, open};
+      continue;
+    }
+    // The leaf's corners' offsets and lengths once per query, then its
+    // triangles' solid angles (Van Oosterom and Strackee 1983).
+    alignas(64) double ox[kMaxLeafPoints][kPacket], oy[kMaxLeafPoints][kPacket],
+        oz[kMaxLeafPoints][kPacket], length[kMaxLeafPoints][kPacket];
+    for (int p = 0; p < node.num_points; ++p) {
+      const Eigen::Vector3d& point = tree.points[size_t(node.first_point + p)];
+      const double px = point.x(), py = point.y(), pz = point.z();
+      for (int k = 0; k < kPacket; ++k) {
+        ox[p][k] = px - qx[k], oy[p][k] = py - qy[k], oz[p][k] = pz - qz[k];
+        length[p][k] = std::sqrt(ox[p][k] * ox[p][k] + oy[p][k] * oy[p][k] + oz[p][k] * oz[p][k]);
+      }
+    }
+    for (int t = node.first; t < node.first + node.count; ++t) {
+      const unsigned char* c = &tree.corners[size_t(3 * t)];
+      alignas(64) double numerator[kPacket], denominator[kPacket];
+      for (int k = 0; k < kPacket; ++k) {
+        const double x0 = ox[c[0]][k], x1 = oy[c[0]][k], x2 = oz[c[0]][k], lx = length[c[0]][k];
+        const double y0 = ox[c[1]][k], y1 = oy[c[1]][k], y2 = oz[c[1]][k], ly = length[c[1]][k];
+        const double z0 = ox[c[2]][k], z1 = oy[c[2]][k], z2 = oz[c[2]][k], lz = length[c[2]][k];
+        numerator[k] =
+            x0 * (y1 * z2 - y2 * z1) + x1 * (y2 * z0 - y0 * z2) + x2 * (y0 * z1 - y1 * z0);
+        denominator[k] = lx * ly * lz + (x0 * y0 + x1 * y1 + x2 * y2) * lz +
+                         (y0 * z0 + y1 * z1 + y2 * z2) * lx + (z0 * x0 + z1 * x1 + z2 * x2) * ly;
+      }
+      for (int k = 0; k < kPacket; ++k) {
+        const double angle = 2 * fast_atan2(numerator[k], denominator[k]);
+        sum[k] += near[k] > 0 ? angle : 0.0;  // x + 0 is x
+      }
     }
   }
   for (int k = 0; k < count; ++k) w[k] = sum[k] / (4 * M_PI);
@@ -218,7 +234,6 @@ void winding_numbers_at(const FastWindingNumberTree& tree, const Eigen::Vector3d
 
 // Fills w(i) for the rows i of Q listed in `rows`, kPacket consecutive rows at
 // a time (in a Z-order they are close, and take nearly the same walk).
-template <bool Fast = false>
 void solve_rows(const FastWindingNumberTree& tree, const Eigen::MatrixX3d& Q,
                 const std::vector<int>& rows, double accuracy, Eigen::VectorXd* w) {
   if (tree.nodes.empty()) return;
@@ -230,7 +245,7 @@ void solve_rows(const FastWindingNumberTree& tree, const Eigen::MatrixX3d& Q,
     Eigen::Vector3d q[kPacket];
     double values[kPacket];
     for (int k = 0; k < count; ++k) q[k] = Q.row(rows[first + size_t(k)]);
-    winding_numbers_at<Fast>(tree, q, count, accuracy, values);
+    winding_numbers_at(tree, q, count, accuracy, values);
     for (int k = 0; k < count; ++k) (*w)(rows[first + size_t(k)]) = values[k];
   }
 }
@@ -249,9 +264,7 @@ Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const ClassifyOptions& options) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
   const std::vector<int> order = spatial_order(Q);
-  // The first pass's atan2 is fast_atan2: its error, kFastAtan2Error / (2 pi)
-  // per near triangle, is far below the margin for any mesh (1e-4 at 6 million triangles).
-  solve_rows<true>(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
+  solve_rows(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
   std::vector<int> uncertain;
   for (int i : order)
     if (classify_refines(w(i), options)) uncertain.push_back(i);

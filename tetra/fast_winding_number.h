@@ -44,7 +44,9 @@ FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d&
                                                          const Eigen::MatrixX3i& F,
                                                          double accuracy = 2.0);
 
-/// Approximate winding numbers at the rows of Q (parallel over the queries).
+/// Approximate winding numbers at the rows of Q (parallel over the queries):
+/// clusters farther than tree.accuracy times their radius by their dipole, the
+/// near triangles' solid angles with fast_atan2 (each within kFastAtan2Error).
 Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
                                           const Eigen::MatrixX3d& Q);
 
@@ -57,10 +59,10 @@ struct ClassifyOptions {
 /// thirds of the time of fast_winding_number_solve: every query first with the
 /// coarser far field, then those whose |w| is within `margin` of 1/2 again at
 /// the tree's accuracy. Elsewhere the coarse value is kept: it differs from the
-/// tree-accuracy one by at most 0.164 over the 1.9 million queries of the
-/// twelve robust-route meshes of ../shared/data (docs/history/performance.md), so it is
-/// on the same side of 1/2, and within `margin` of the tree-accuracy value
-/// (the robust route's rescue counts on both).
+/// tree-accuracy one by at most 0.205 over the 15.4 million queries the
+/// default's carves make on ../shared/data's 22 shapes and faust_remeshed
+/// (docs/performance.md), so it is on the same side of 1/2, and within
+/// `margin` of the tree-accuracy value (the robust route's rescue counts on both).
 Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const Eigen::MatrixX3d& Q,
                                              const ClassifyOptions& options = {});
