@@ -3,7 +3,8 @@
 // the AMG hierarchy, one V-cycle and one CG global step of the iterative
 // solver, lambda_2 both ways, one local step, one global step, one
 // local-global iteration and the whole cascade with either linear solver, the
-// per-iteration checks (energy, edge ratio), and the metrics. The mesh is
+// per-iteration checks (energy, edge ratio), the metrics, and the robust
+// route's winding numbers at the Delaunay tets' centroids. The mesh is
 // $UNFOLD_BENCH_MESH, else TOSCA wolf0 from ../shared/data, else the built-in
 // demo shape; tetrahedralized with the default options and TetGen's volume
 // bound $UNFOLD_BENCH_MAX_VOLUME if set. Direct-solver benchmarks are skipped
@@ -33,6 +34,8 @@
 #include "solvers/local_global.h"
 #include "solvers/sparse_ldlt.h"
 #include "solvers/unfold_problem.h"
+#include "tetra/delaunay_tets.h"
+#include "tetra/fast_winding_number.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -42,6 +45,7 @@ constexpr int kDirectLimit = 60000;
 
 struct BenchMesh {
   std::string name;
+  SurfaceMesh surface;
   TetMesh tets;
   UnfoldProblem problem;
   std::shared_ptr<AmgData> amg;  ///< of the beta Laplacian
@@ -66,6 +70,7 @@ const BenchMesh& bench_mesh() {
     if (const char* volume = std::getenv("UNFOLD_BENCH_MAX_VOLUME"))
       tet_options.max_volume = std::atof(volume);
     m.tets = tetrahedralize(surface, tet_options);
+    m.surface = surface;
     sort_interior_vertices(&m.tets);  // as the pipeline does
     m.problem = make_unfold_problem(m.tets, build_edge_graph(int(m.tets.V.rows()), m.tets.T),
                                     EnergyOptions{});
@@ -339,6 +344,29 @@ void BM_GeodesicError(benchmark::State& state) {
   state.counters["sources"] = e.sources_used;
 }
 BENCHMARK(BM_GeodesicError)->Unit(benchmark::kMillisecond);
+
+// The robust route's carve: the winding numbers at the centroids of the
+// Delaunay tets of the surface's vertices (inside, outside and slivers on the
+// surface, as the carve meets them); arg 0: classify (the carve's), 1: solve
+// (the accurate pass).
+void BM_WindingNumbers(benchmark::State& state) {
+  const BenchMesh& m = bench_mesh();
+  const FastWindingNumberTree tree =
+      fast_winding_number_precomputation(m.surface.V, triangulate_faces(m.surface));
+  const Eigen::MatrixX4i T = delaunay_tets(m.surface.V);
+  Eigen::MatrixX3d centroids(T.rows(), 3);
+  for (Eigen::Index t = 0; t < T.rows(); ++t)
+    centroids.row(t) = (m.surface.V.row(T(t, 0)) + m.surface.V.row(T(t, 1)) +
+                        m.surface.V.row(T(t, 2)) + m.surface.V.row(T(t, 3))) /
+                       4;
+  Eigen::VectorXd w;
+  for (auto _ : state)
+    w = state.range(0) == 0 ? fast_winding_number_classify(tree, centroids)
+                            : fast_winding_number_solve(tree, centroids);
+  state.counters["queries"] = double(centroids.rows());
+  state.counters["inside"] = double((w.array() > 0.5).count());
+}
+BENCHMARK(BM_WindingNumbers)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace unfold
