@@ -81,6 +81,11 @@
   X(soften_epsilon, "soften.epsilon", soften.epsilon,                                              \
     "soften.scale: the relative energy change that ends the second solve (its fine scale is "      \
     "filtered out anyway); 0: cascade.epsilon")                                                    \
+  X(untangle_sweeps, "untangle.sweeps", untangle.sweeps,                                           \
+    "after the solve: passes that push the canonical tet mesh's inverted tets back out by "       \
+    "moving their corners a little (mesh/untangle_tets.h, docs/method.md, detail); 0: off")       \
+  X(untangle_max_move, "untangle.max_move", untangle.max_move,                                     \
+    "untangle.sweeps: how far a vertex may move, times the shortest tet edge at it at rest")       \
   X(beta_mode, "beta.mode", beta_mode,                                                             \
     "relative: beta = value * n / lambda_2(L); absolute: beta = value")                            \
   X(beta, "beta.value", beta_value, "starting beta (see beta.mode)")                               \

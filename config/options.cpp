@@ -185,6 +185,7 @@ Options::Options() {
   soften.filter_stretch = 0.09;
   soften.epsilon = 1e-6;
   integrate.pose_pull = 0.1;
+  untangle.sweeps = 30;
   energy.stretch_masses = "lumped";
 }
 
@@ -304,6 +305,9 @@ void validate_options(const Options& o) {
           "must be a finite number >= 0");
   require(o.integrate.pose_pull >= 0 && o.integrate.pose_pull <= 1, "integrate.pose_pull",
           "must be in [0, 1] (0 = off)");
+  require(o.untangle.sweeps >= 0, "untangle.sweeps", "must be >= 0 (0 = off)");
+  require(std::isfinite(o.untangle.max_move) && o.untangle.max_move >= 0, "untangle.max_move",
+          "must be a finite number >= 0");
   require(o.beta_mode == "relative" || o.beta_mode == "absolute", "beta.mode",
           "must be relative or absolute, got '" + o.beta_mode + "'");
   require(std::isfinite(o.beta_value) && o.beta_value > 0, "beta.value",

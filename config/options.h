@@ -8,6 +8,7 @@
 
 #include "energies/energy_terms.h"
 #include "energies/soft_joint_factors.h"
+#include "mesh/untangle_tets.h"
 #include "metrics/geodesic_error.h"
 #include "metrics/stretch_error.h"
 #include "solvers/cascade.h"
@@ -55,6 +56,7 @@ struct Options {
   LinearSolverOptions linear_solver;  ///< the global step's solver (method local_global)
   IntegrateOptions integrate;         ///< after the cascade (pose invariance)
   SoftenOptions soften;               ///< the cascade again with its joints softened
+  UntangleOptions untangle;           ///< the canonical tets' inverted ones mended
   EnergyOptions energy;
   CeresOptions ceres;
   LsmdsOptions lsmds;                                              ///< method: lsmds only

@@ -6,23 +6,24 @@
 namespace unfold {
 namespace {
 
-Method baseline(const char* name, const Stage& solve) {
-  return {name,
-          {
-              check_and_simplify(),
-              tetrahedralize_the_input(),
-              // a preparation shared with a method that tetrahedralizes the unfolded shape
-              tetrahedralize_deferred().when(tets_deferred),
-              solve_edges(),
-              solve,
-              measure(),
-          }};
+Method baseline(const char* name, const Stage& solve, const Options& options) {
+  StageList stages = {
+      check_and_simplify(),
+      tetrahedralize_the_input(),
+      // a preparation shared with a method that tetrahedralizes the unfolded shape
+      tetrahedralize_deferred().when(tets_deferred),
+      solve_edges(),
+      solve,
+  };
+  if (untangles(options)) stages.push_back(untangle());
+  stages.push_back(measure());
+  return {name, stages};
 }
 
 }  // namespace
 
-Method lsmds_method(const Options&) { return baseline("lsmds", lsmds_solve()); }
+Method lsmds_method(const Options& options) { return baseline("lsmds", lsmds_solve(), options); }
 
-Method scf_method(const Options&) { return baseline("scf", scf_solve()); }
+Method scf_method(const Options& options) { return baseline("scf", scf_solve(), options); }
 
 }  // namespace unfold

@@ -32,6 +32,11 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"E_geo_skipped", m.E_geo_skipped.empty() ? Json(std::nan("")) : Json(m.E_geo_skipped)},
       {"edge_ratio", c.edge_ratio},
       {"inverted_tets", m.inverted_tets},
+      // What untangle.sweeps did before they were counted (all 0: off).
+      {"untangle", JsonObject{{"inverted_before", r.untangle.inverted_before},
+                              {"passes", r.untangle.sweeps},
+                              {"moved_vertices", r.untangle.moved_vertices},
+                              {"largest_move", r.untangle.largest_move}}},
       // The damage measure (metrics/surface_damage.h), always computed.
       {"damaged_edges_percent", m.damage.damaged_edges_percent},
       {"surface_edge_ratio_p999", m.damage.ratio_p999},

@@ -141,6 +141,12 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
     m.E_str_exact = m.E_str_exact && r.metrics.E_str_exact;
     m.E_geo_exact = m.E_geo_exact && r.metrics.E_geo_exact;
     m.inverted_tets += r.metrics.inverted_tets;
+    UntangleReport& u = merged.untangle;
+    u.inverted_before += r.untangle.inverted_before;
+    u.inverted_after += r.untangle.inverted_after;
+    u.moved_vertices += r.untangle.moved_vertices;
+    u.largest_move = std::max(u.largest_move, r.untangle.largest_move);
+    u.sweeps = std::max(u.sweeps, r.untangle.sweeps);
     m.seconds += r.metrics.seconds;
   }
   merged.canonical.faces = merged.surface.faces;

@@ -13,6 +13,7 @@
 #include "mesh/check_surface_mesh.h"
 #include "mesh/simplify_surface_mesh.h"
 #include "mesh/tet_volumes.h"
+#include "mesh/untangle_tets.h"
 #include "metrics/edge_ratio.h"
 #include "metrics/pose_invariance.h"
 #include "metrics/rigidity_error.h"
@@ -431,6 +432,22 @@ Stage anchored() {
       StagePart::unfold, StageTimer::anchored);
 }
 
+Stage untangle() {
+  return step("untangle", [](UnfoldState& s) {
+    const TetMesh& tets = s.mesh.tets;
+    if (tets.T.rows() == 0) return;  // the surface's edge graph: no tets to mend
+    const Eigen::MatrixX3d& made =
+        s.result.unfolded_tet_positions.rows() > 0 ? s.result.unfolded_tet_positions : tets.V;
+    const Eigen::MatrixXi faces = triangulate_faces(s.mesh.surface);
+    s.result.untangle = untangle_tets(made, tets.V, tets.T, s.options.untangle,
+                                      &s.result.cascade.positions, &faces);
+    const UntangleReport& r = s.result.untangle;
+    VLOG(1) << "untangled: " << r.inverted_before << " inverted tets, " << r.inverted_after
+            << " after " << r.sweeps << " passes; " << r.moved_vertices
+            << " vertices moved, at most " << r.largest_move << " of their shortest edge";
+  });
+}
+
 Stage measure() {
   return step(
       "metrics",
@@ -495,6 +512,8 @@ Stage measure() {
 }
 
 bool surface_open(const UnfoldState& state) { return state.open; }
+
+bool untangles(const Options& options) { return options.untangle.sweeps > 0; }
 
 bool coarse_surface_solve(const UnfoldState& state) { return state.coarsening.V.rows() > 0; }
 

@@ -33,6 +33,7 @@ Stage scf_solve();             ///< method scf
 Stage anchor_unit();           ///< lambda_2 of the surface: the integration's anchor unit
 Stage integration();           ///< the rotation field integrated (one ARAP step)
 Stage anchored();              ///< the anchored ARAP steps after it
+Stage untangle();              ///< the canonical tets' inverted ones mended (untangle_tets)
 Stage measure();               ///< the canonical pose placed, the metrics
 
 // Conditions and choices of the options.
@@ -61,5 +62,7 @@ bool filters_soft_joints(const UnfoldState& state);
 /// integrate.iterations > 0 for a cascade method (LSMDS has no rotations to
 /// integrate, SCF's ARAP refinement is its own)
 bool integrates(const Options& options);
+/// untangle.sweeps > 0
+bool untangles(const Options& options);
 
 }  // namespace unfold

@@ -9,6 +9,7 @@
 #include "mesh/curve_skeleton.h"
 #include "mesh/surface_mesh.h"
 #include "mesh/tet_mesh.h"
+#include "mesh/untangle_tets.h"
 #include "metrics/surface_damage.h"
 #include "metrics/surface_folds.h"
 #include "solvers/cascade.h"
@@ -76,6 +77,7 @@ struct UnfoldResult {
   /// (the surface solve's shape; metrics.inverted_tets is counted against it); else empty
   Eigen::MatrixX3d unfolded_tet_positions;
   TetReport tet_report;
+  UntangleReport untangle;  ///< what untangle.sweeps did to the canonical tets (all 0: off)
   int num_edges = 0;
   double lambda2 = 0;
   double beta_requested = 0;  ///< starting beta from the options (beta.mode, beta.value)

@@ -41,7 +41,7 @@ TEST(MethodStages, TheDefaultConfigListsTheDefaultsStages) {
           "surface: lambda_2 and beta", "surface: cascade", "soft joints: lambda_2 and beta",
           "soft joints: cascade", "integration: anchor lambda_2", "soft joints: filter",
           "surface: to full resolution", "tets of the unfolded shape", "given tets' unfolded shape",
-          "edges", "interior placement", "integration", "anchored steps", "metrics"}));
+          "edges", "interior placement", "integration", "anchored steps", "untangle", "metrics"}));
 }
 
 TEST(MethodStages, ThePaperConfigListsThePapersStages) {
@@ -80,7 +80,7 @@ TEST(MethodStages, TheDriverTimesEveryStageOnceInOrder) {
                                       "surface: lambda_2 and beta", "surface: cascade",
                                       "soft joints: lambda_2 and beta", "soft joints: cascade",
                                       "soft joints: filter", "tets of the unfolded shape", "edges",
-                                      "integration", "anchored steps", "metrics"}));
+                                      "integration", "anchored steps", "untangle", "metrics"}));
   for (const StageTime& t : d.stage_seconds) EXPECT_GE(t.seconds, 0) << t.name;
   EXPECT_DOUBLE_EQ(d.seconds_prepare, stage_seconds_sum(d.stage_seconds, {"check and simplify"}));
   EXPECT_DOUBLE_EQ(d.seconds_lambda2,

@@ -174,6 +174,8 @@ TEST(Components, MergedPerVertexFieldsAndERigAreOverAllTetVertices) {
                           (ra.num_edges + rb.num_edges);
   EXPECT_GT(std::abs(r.metrics.E_rig - by_edges), 1e-6);  // the old weighting would differ
   EXPECT_EQ(r.metrics.inverted_tets, ra.metrics.inverted_tets + rb.metrics.inverted_tets);
+  EXPECT_EQ(r.untangle.inverted_before, ra.untangle.inverted_before + rb.untangle.inverted_before);
+  EXPECT_EQ(r.untangle.moved_vertices, ra.untangle.moved_vertices + rb.untangle.moved_vertices);
   // The damage measure: over the merged surface, as over any output (issue 44).
   const SurfaceDamage d = surface_damage(r.surface.V, r.canonical.V, r.surface.faces);
   EXPECT_EQ(r.metrics.damage.edges, ra.metrics.damage.edges + rb.metrics.damage.edges);
