@@ -105,8 +105,8 @@ UntangleReport untangle_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3
   while (report.sweeps < options.sweeps && report.inverted_after > 0) {
     ++report.sweeps;
     for (const int t : below) {
-      const double v =
-          upright_volume(t);  // a neighbour mended earlier in the pass may have moved it
+      // Evaluated again: a neighbour mended earlier in the pass may have moved it.
+      const double v = upright_volume(t);
       if (v >= target[t]) continue;
       const double sign = made_volume[t] > 0 ? 1.0 : -1.0;
       const Eigen::Matrix<double, 4, 3> g = sign * volume_gradient(corners(t));

@@ -14,8 +14,8 @@ namespace unfold {
 
 struct UntangleOptions {
   int sweeps = 0;  ///< passes over the tets below their target volume at most; 0: off
-  /// how far a vertex may move in all, times the shortest tet edge at it at
-  /// rest: a tet that cannot be mended within it is left inverted
+  /// how far a vertex may move in all, times h (its shortest rest edge, below):
+  /// a tet that cannot be mended within it is left inverted
   double max_move = 0.2;
 };
 
@@ -24,18 +24,17 @@ struct UntangleReport {
   int inverted_before = 0;  ///< tets inverted in the positions given
   int inverted_after = 0;   ///< and in the positions returned
   int moved_vertices = 0;
-  /// the largest move of a vertex, relative to the shortest tet edge at it at rest
-  double largest_move = 0;
-  int sweeps = 0;  ///< passes made
+  double largest_move = 0;  ///< the largest move of a vertex, relative to its h
+  int sweeps = 0;           ///< passes made
 };
 
-/// Moves the corners of the tets whose signed volume in Q has lost the sign it
-/// has at `made` (count_inverted_tets' test) until each has at least a tenth
-/// of its rest volume with that sign, or the sweeps or a vertex's allowed move
-/// run out. Each pass visits the tets below that target in row order and moves
-/// corner k by lambda h_k^2 grad_k V (h_k the shortest rest tet edge at the
-/// corner): the least move, in units of h, that gives the tet its target volume
-/// to first order. Passes stop early once no tet is inverted.
+/// Pushes the tets inverted in Q (their signed volume has lost the sign it has
+/// at `made`: count_inverted_tets' test) back out. Each pass visits, in row
+/// order, the tets whose volume with that sign is below a tenth of their rest
+/// volume and moves corner k by lambda h_k^2 grad_k V, h_k the shortest rest
+/// edge at the corner (of a tet or of a face): the least move, in units of h,
+/// that gives the tet that volume to first order. No vertex moves more than
+/// max_move h in all; the passes stop once no tet is inverted.
 /// @param made  positions T was made at (their volumes' signs are the orientation)
 /// @param rest  rest positions (the target volumes, h)
 /// @param T     tets, rows of corner indices
@@ -43,9 +42,8 @@ struct UntangleReport {
 /// @param faces optional rows of vertices joined otherwise (the surface's
 ///        triangles): their edges count toward h too, so that a surface edge no
 ///        tet has (shorter than the tets' at its ends) is not stretched
-/// @throws UsageError if the positions' sizes differ, a corner (or a face's vertex) is out of
-/// range,
-///         sweeps < 0 or max_move is not finite and >= 0
+/// @throws UsageError if the positions' sizes differ, a corner or a face's
+///         vertex is out of range, sweeps < 0 or max_move is not finite and >= 0
 UntangleReport untangle_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3d& rest,
                              const Eigen::MatrixX4i& T, const UntangleOptions& options,
                              Eigen::MatrixX3d* Q, const Eigen::MatrixXi* faces = nullptr);
