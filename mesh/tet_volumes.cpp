@@ -4,14 +4,17 @@
 
 namespace unfold {
 
+double tet_volume(const Eigen::Matrix<double, 4, 3>& x) {
+  const Eigen::RowVector3d a = x.row(0);
+  return (x.row(1) - a).cross(x.row(2) - a).dot(x.row(3) - a) / 6.0;
+}
+
 Eigen::VectorXd tet_volumes(const Eigen::MatrixX3d& V, const Eigen::MatrixX4i& T) {
   Eigen::VectorXd volumes(T.rows());
+  Eigen::Matrix<double, 4, 3> x;
   for (Eigen::Index t = 0; t < T.rows(); ++t) {
-    const Eigen::Vector3d a = V.row(T(t, 0));
-    volumes[t] = (V.row(T(t, 1)).transpose() - a)
-                     .cross(V.row(T(t, 2)).transpose() - a)
-                     .dot(V.row(T(t, 3)).transpose() - a) /
-                 6.0;
+    for (int k = 0; k < 4; ++k) x.row(k) = V.row(T(t, k));
+    volumes[t] = tet_volume(x);
   }
   return volumes;
 }

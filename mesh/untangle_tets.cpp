@@ -18,7 +18,10 @@ namespace {
 // a sliver's corners move a small fraction of an edge.
 constexpr double kTargetShare = 0.1;
 
-// The gradient of a tet's signed volume with respect to each corner (rows).
+// The gradient of tet_volume with respect to each corner (rows). The volume
+// term's preconditioner (energies/volume_energy.cpp) writes the first row
+// directly; here it is minus the sum of the others, which the figures in
+// docs/results were made with.
 Eigen::Matrix<double, 4, 3> volume_gradient(const Eigen::Matrix<double, 4, 3>& x) {
   const Eigen::RowVector3d a = x.row(0), b = x.row(1), c = x.row(2), d = x.row(3);
   Eigen::Matrix<double, 4, 3> g;
@@ -27,10 +30,6 @@ Eigen::Matrix<double, 4, 3> volume_gradient(const Eigen::Matrix<double, 4, 3>& x
   g.row(3) = (b - a).cross(c - a) / 6.0;
   g.row(0) = -(g.row(1) + g.row(2) + g.row(3));
   return g;
-}
-
-double volume(const Eigen::Matrix<double, 4, 3>& x) {
-  return (x.row(1) - x.row(0)).cross(x.row(2) - x.row(0)).dot(x.row(3) - x.row(0)) / 6.0;
 }
 
 }  // namespace
@@ -74,7 +73,7 @@ UntangleReport untangle_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3
   };
   // The tet's volume with the sign it was made with: positive when upright.
   const auto upright_volume = [&](Eigen::Index t) {
-    return made_volume[t] > 0 ? volume(corners(t)) : -volume(corners(t));
+    return made_volume[t] > 0 ? tet_volume(corners(t)) : -tet_volume(corners(t));
   };
   // Each tet's upright volume as last evaluated (infinite: made flat, never mended).
   Eigen::VectorXd now(m);
