@@ -15,8 +15,7 @@ Method baseline(const char* name, const Stage& solve, const Options& options) {
       solve_edges(),
       solve,
   };
-  if (untangles(options)) stages.push_back(untangle());
-  stages.push_back(measure());
+  append(&stages, finish(options));
   return {name, stages};
 }
 

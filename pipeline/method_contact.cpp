@@ -36,8 +36,7 @@ Method contact_method(const Options& options) {
                       interior_placement().unless(contact),
                   });
   if (integrate) append(&stages, {anchor_unit().unless(contact), integration(), anchored()});
-  if (untangles(options)) stages.push_back(untangle());
-  stages.push_back(measure());
+  append(&stages, finish(options));
   return {"contact", stages};
 }
 

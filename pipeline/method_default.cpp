@@ -40,8 +40,7 @@ Method default_method(const Options& options) {
                       interior_placement().when(keeps_input_tets).unless(given_tets_made_unfolded),
                   });
   if (integrate) append(&stages, {integration(), anchored()});
-  if (untangles(options)) stages.push_back(untangle());
-  stages.push_back(measure());
+  append(&stages, finish(options));
   return {"default", stages};
 }
 

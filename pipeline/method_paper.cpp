@@ -21,8 +21,7 @@ Method paper_method(const Options& options) {
     append(&stages,
            {soft_joints_lambda2(tets), soft_joints_cascade(tets), soft_joints_filter(tets)});
   if (integrates(options)) append(&stages, {anchor_unit(), integration(), anchored()});
-  if (untangles(options)) stages.push_back(untangle());
-  stages.push_back(measure());
+  append(&stages, finish(options));
   return {"paper", stages};
 }
 

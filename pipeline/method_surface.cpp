@@ -23,8 +23,7 @@ Method surface_method(const Options& options) {
   stages.push_back(full_resolution().when(coarse_surface_solve));
   stages.push_back(interior_placement());
   if (integrates(options)) append(&stages, {anchor_unit(), integration(), anchored()});
-  if (untangles(options)) stages.push_back(untangle());
-  stages.push_back(measure());
+  append(&stages, finish(options));
   return {"surface", stages};
 }
 

@@ -515,6 +515,13 @@ bool surface_open(const UnfoldState& state) { return state.open; }
 
 bool untangles(const Options& options) { return options.untangle.sweeps > 0; }
 
+StageList finish(const Options& options) {
+  StageList stages;
+  if (untangles(options)) stages.push_back(untangle());
+  stages.push_back(measure());
+  return stages;
+}
+
 bool coarse_surface_solve(const UnfoldState& state) { return state.coarsening.V.rows() > 0; }
 
 bool contact_faces_found(const UnfoldState& state) {

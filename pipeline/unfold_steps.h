@@ -35,6 +35,8 @@ Stage integration();           ///< the rotation field integrated (one ARAP step
 Stage anchored();              ///< the anchored ARAP steps after it
 Stage untangle();              ///< the canonical tets' inverted ones mended (untangle_tets)
 Stage measure();               ///< the canonical pose placed, the metrics
+/// Every method's last stages: untangle (untangle.sweeps > 0), then measure.
+StageList finish(const Options& options);
 
 // Conditions and choices of the options.
 bool surface_open(const UnfoldState& state);
