@@ -105,10 +105,11 @@ UntangleReport untangle_tets(const Eigen::MatrixX3d& made, const Eigen::MatrixX3
     ++report.sweeps;
     for (const int t : below) {
       // Evaluated again: a neighbour mended earlier in the pass may have moved it.
-      const double v = upright_volume(t);
-      if (v >= target[t]) continue;
+      const Eigen::Matrix<double, 4, 3> x = corners(t);
       const double sign = made_volume[t] > 0 ? 1.0 : -1.0;
-      const Eigen::Matrix<double, 4, 3> g = sign * volume_gradient(corners(t));
+      const double v = sign * tet_volume(x);
+      if (v >= target[t]) continue;
+      const Eigen::Matrix<double, 4, 3> g = sign * volume_gradient(x);
       double norm = 0;
       for (int k = 0; k < 4; ++k) norm += h[T(t, k)] * h[T(t, k)] * g.row(k).squaredNorm();
       if (!(norm > 0)) continue;

@@ -122,6 +122,13 @@ void take_solve(UnfoldResult& r, CascadeSolve solve) {
   append(&r.warnings, solve.warnings);
 }
 
+// Where the tets were made: the unfolded shape's positions when the method made
+// them there, else the rest. Their orientation there is the upright one.
+const Eigen::MatrixX3d& tets_made_at(const UnfoldState& s) {
+  return s.result.unfolded_tet_positions.rows() > 0 ? s.result.unfolded_tet_positions
+                                                    : s.mesh.tets.V;
+}
+
 }  // namespace
 
 Stage check_and_simplify() {
@@ -436,10 +443,8 @@ Stage untangle() {
   return step("untangle", [](UnfoldState& s) {
     const TetMesh& tets = s.mesh.tets;
     if (tets.T.rows() == 0) return;  // the surface's edge graph: no tets to mend
-    const Eigen::MatrixX3d& made =
-        s.result.unfolded_tet_positions.rows() > 0 ? s.result.unfolded_tet_positions : tets.V;
     const Eigen::MatrixXi faces = triangulate_faces(s.mesh.surface);
-    s.result.untangle = untangle_tets(made, tets.V, tets.T, s.options.untangle,
+    s.result.untangle = untangle_tets(tets_made_at(s), tets.V, tets.T, s.options.untangle,
                                       &s.result.cascade.positions, &faces);
     const UntangleReport& r = s.result.untangle;
     VLOG(1) << "untangled: " << r.inverted_before << " inverted tets, " << r.inverted_after
@@ -499,9 +504,7 @@ Stage measure() {
           m.E_geo_exact = geo.exact;
         }
         // Against the orientation the tets were made with.
-        m.inverted_tets = count_inverted_tets(
-            result.unfolded_tet_positions.rows() > 0 ? result.unfolded_tet_positions : P, Q,
-            tets.T);
+        m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);
         m.damage = surface_damage(surface.V, result.canonical.V, surface.faces);
         m.folds = surface_folds(surface.V, result.canonical.V, triangulate_faces(surface));
         result.surface = std::move(s.mesh.surface);
