@@ -15,6 +15,7 @@
 #include "metrics/edge_ratio.h"
 #include "solvers/anderson_acceleration.h"
 #include "solvers/backend_support.h"
+#include "solvers/block_kernels.h"
 
 namespace unfold {
 bool use_iterative_solver(const LinearSolverOptions& options,
@@ -130,6 +131,30 @@ double energy_after_global_step(const LocalGlobalData& data, const Rotations& R,
   return energy;
 }
 
+double energy_from_covariances(const LocalGlobalData& data, const Eigen::MatrixX3d& Q,
+                               const Rotations& R, const std::vector<Eigen::Matrix3d>& S) {
+  // Every term is translation invariant but A stands for the true Hessian on
+  // zero-mean Q only (quadratic_term.h): the form is taken at Q less its mean.
+  const CsrView A = CsrView::of_symmetric(data.A);
+  const Eigen::RowVector3d mean = Q.colwise().mean();
+  using Sum = Eigen::Array<double, 1, 1>;
+  const Sum sum = chunked_row_sum(A.rows, [&](int i) {
+    const Eigen::RowVector3d q = Q.row(i) - mean;
+    double e = 0;
+    for (int k = A.outer[i]; k < A.outer[i + 1]; ++k)
+      e += A.values[k] * q.dot(Q.row(A.inner[k]) - mean);
+    e -= 2 * q.dot(data.B_free.row(i));
+    if (!data.rotation_terms.empty()) e -= 2 * (R[size_t(i)] * S[size_t(i)]).trace();
+    return Sum(e);
+  });
+  double energy = sum(0) + data.c_free;
+  if (data.part.U_fixed.cols() > 0)
+    energy += (data.part.U_fixed.transpose() * (Q.rowwise() - mean)).squaredNorm();
+  for (const QuadraticTerm* term : data.rotation_terms)
+    energy += term->weight(data.beta) * term->constant(R);
+  return energy;
+}
+
 LocalGlobalBackend::LocalGlobalBackend(const UnfoldProblem& problem,
                                        const LinearSolverOptions& options,
                                        std::shared_ptr<const AmgData> amg)
@@ -149,7 +174,7 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
   double level = 0;  // energy of the current iterate at its best rotations
   const auto fit_and_measure = [&] {
     fit_rotations(problem, *Q, data_.beta, &R_, &covariances_);
-    return total_energy(problem, *Q, R_, data_.beta);
+    return energy_from_covariances(data_, *Q, R_, covariances_);
   };
   if (accelerate) level = fit_and_measure();
   // The iterate before the global step and the plain step after it, their

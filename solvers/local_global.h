@@ -113,6 +113,17 @@ void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX
 double energy_after_global_step(const LocalGlobalData& data, const Rotations& R,
                                 const Eigen::MatrixX3d& Q);
 
+/// E(Q; R) at data.beta from the quadratic form and the cell covariances S the
+/// local step fitted R from (fit_rotations' buffer), instead of a sweep over
+/// every term's residual blocks: for quadratic terms, and rotation terms whose
+/// B(R) is linear in R (energies/rotation_term.h),
+///   E = tr(Q^T (A + U U^T) Q) - 2 tr(Q^T B_free) + c_free + sum_t w_t c_t(R) - 2 sum_i tr(R_i
+///   S_i).
+/// A sum over rows in fixed chunks: the same value whatever the number of threads.
+/// @pre S holds the rotation terms' covariances at Q, weighted at data.beta
+double energy_from_covariances(const LocalGlobalData& data, const Eigen::MatrixX3d& Q,
+                               const Rotations& R, const std::vector<Eigen::Matrix3d>& S);
+
 /// Algorithm 1's iterations for the cascade driver (solvers/cascade.h).
 class LocalGlobalBackend : public CascadeBackend {
  public:

@@ -177,6 +177,7 @@ TEST(LocalSpread, BothSolversReachTheGlobalStepsMinimiser) {
   masses *= f.n / masses.sum();
   const double beta = 1.25 * f.n / fiedler_value(beta_laplacian(f.problem), masses);
   test::expect_global_steps_reach_the_minimiser(f, beta);
+  test::expect_energy_from_covariances_is_the_total(f, beta);
 }
 
 // The default lines the animal's legs up along its body, far from each other

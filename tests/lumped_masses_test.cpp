@@ -190,6 +190,7 @@ TEST(LumpedStretch, BothSolversReachTheGlobalStepsMinimiser) {
   const LumpedFixture f(graded_grid(16, 5, 5));
   const double beta = 1.5 * f.n / f.lambda2;
   test::expect_global_steps_reach_the_minimiser(f, beta);
+  test::expect_energy_from_covariances_is_the_total(f, beta);
   CascadeOptions options;
   options.beta = beta;
   const auto cascade = [&](const char* method) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/errors.h"
+#include "energies/user_pairs_energy.h"
 #include "geometry/best_rotation.h"
 #include "mesh/best_rotations.h"
 #include "solvers/cascade.h"
@@ -126,6 +127,18 @@ TEST(SolverGlobalStep, ZeroesTheEnergyGradientAtFixedRotations) {
   total_energy(f.problem, bent, R, beta, &grad_at_bent);
   EXPECT_LT(grad.norm(), 1e-9 * grad_at_bent.norm());
   EXPECT_LT(Q.colwise().mean().norm(), 1e-12);
+}
+
+// The energy from the local step's covariances is the residuals' sum, with the
+// paper's uniform masses (whose 1 1^T part A leaves out) and with user pairs
+// (a linear part free of the rotations).
+TEST(SolverEnergy, FromTheCovariancesIsTheTotal) {
+  Fixture f;
+  test::expect_energy_from_covariances_is_the_total(f, 1.5 * f.n / f.lambda2);
+  std::vector<UserPair> pairs = {{0, f.n - 1, Eigen::Vector3d(4, 1, 0)},
+                                 {3, 7, Eigen::Vector3d(0, 0, 1)}};
+  f.problem.terms.push_back(std::make_unique<UserPairsEnergy>(pairs, f.n, 1.0));
+  test::expect_energy_from_covariances_is_the_total(f, 2.0 * f.n / f.lambda2);
 }
 
 TEST(SolverGlobalStep, GlobalStepIsTheMinimiserAlongRandomDirections) {

@@ -43,6 +43,26 @@ inline void expect_energy_non_increasing_within_cascades(const CascadeResult& re
   }
 }
 
+/// energy_from_covariances is total_energy at the rotations fit_rotations
+/// fits, from the covariances it fitted them from: at a bent pose of f's mesh
+/// and at a shape that is not zero-mean.
+inline void expect_energy_from_covariances_is_the_total(const ProblemFixture& f, double beta) {
+  LocalGlobalData data;
+  local_global_precomputation(f.problem, &data, LinearSolverOptions{"direct"});
+  local_global_set_beta(beta, &data);
+  Eigen::MatrixX3d Q = f.mesh.V;
+  for (int i = 0; i < f.n; ++i) Q(i, 1) += 0.2 * Q(i, 0) * Q(i, 0) + 0.05 * std::sin(3.0 * i);
+  for (const double shift : {0.0, 0.5}) {
+    const Eigen::MatrixX3d X = Q.rowwise() + Eigen::RowVector3d(shift, -shift, 0);
+    Rotations R;
+    std::vector<Eigen::Matrix3d> S;
+    fit_rotations(f.problem, X, beta, &R, &S);
+    const double total = total_energy(f.problem, X, R, beta);
+    EXPECT_NEAR(energy_from_covariances(data, X, R, S), total, 1e-10 * std::abs(total))
+        << "shift " << shift;
+  }
+}
+
 /// From the rotations of a bent pose of f's mesh, one global step of each
 /// linear solver (direct, and CG to 1e-12) zeroes the energy's gradient at
 /// those rotations, and energy_after_global_step is the energy there: each
