@@ -235,9 +235,13 @@ int run() {
       std::snprintf(text, sizeof text, "%s %.3f", name, value);
     return std::string(text);
   };
+  // E_geo over the surface alone, beside E_geo when it was computed.
+  char surface_geo[48] = "";
+  if (!std::isnan(m.E_geo_surface))
+    std::snprintf(surface_geo, sizeof surface_geo, " (over the surface %.3f)", m.E_geo_surface);
   std::printf(
       "unfolded %d surface vertices (%d tet vertices, %d tets; %s route, %d intersecting face "
-      "pairs) in %.2f s: %s, %s, %s, edge ratio %.3f, %d cascades, %d iterations%s; damaged "
+      "pairs) in %.2f s: %s, %s, %s%s, edge ratio %.3f, %d cascades, %d iterations%s; damaged "
       "surface edges %.3f %% (ratio outside [1/%g, %g]; ratio p99.9 %.2f, max %.2f, min %.3f), "
       "%d inverted tets; folded surface edges %.3f %% (bend sharpened by more than %g "
       "degrees; p99.9 %.0f, max %.0f)\n",
@@ -246,7 +250,7 @@ int run() {
       result.seconds_prepare + result.seconds_unfold, metric("E_rig", m.E_rig).c_str(),
       metric("E_str", m.E_str).c_str(),
       m.E_geo_skipped.empty() ? metric("E_geo", m.E_geo).c_str() : m.E_geo_skipped.c_str(),
-      result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,
+      surface_geo, result.cascade.edge_ratio, result.cascade.cascades, result.cascade.iterations,
       result.cascade.reached_band ? "" : " (edge-ratio band not reached)",
       m.damage.damaged_edges_percent, unfold::kDamagedEdgeRatio, unfold::kDamagedEdgeRatio,
       m.damage.ratio_p999, m.damage.ratio_max, m.damage.ratio_min, m.inverted_tets,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -135,6 +136,20 @@ GeodesicError geodesic_error_solve(const GeodesicRows& rows, const Eigen::Matrix
   for (int s = 0; s < int(rows.sources.size()); ++s)
     row[size_t(s)] = row_sums(Q, rows.sources[size_t(s)], rows.G.row(s).data());
   return finish(row, rows.exact);
+}
+
+GeodesicError surface_geodesic_error(const Eigen::MatrixX3d& V, const Eigen::MatrixXi& F,
+                                     const Eigen::MatrixX3d& Q,
+                                     const GeodesicErrorOptions& options) {
+  if (Q.rows() != V.rows())
+    throw UsageError("surface_geodesic_error: need V and Q with one row per surface vertex");
+  const EdgeGraph graph = build_edge_graph(int(V.rows()), F);
+  if (V.rows() < 2 || connected_components(graph) != 1) {
+    GeodesicError none;
+    none.value = std::numeric_limits<double>::quiet_NaN();
+    return none;
+  }
+  return geodesic_error(graph, V, Q, options);
 }
 
 }  // namespace unfold

@@ -38,6 +38,15 @@ struct GeodesicError {
 GeodesicError geodesic_error(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                              const Eigen::MatrixX3d& Q, const GeodesicErrorOptions& options = {});
 
+/// E_geo over a surface alone: geodesic_error on the edge graph of the faces F,
+/// the rest surface V against the deformed one Q.
+/// @param F faces (polygons split into triangles, or triangles), indices into V
+/// @return NaN when the faces' edges do not join every vertex
+/// @throws as geodesic_error (UsageError on mismatched sizes)
+GeodesicError surface_geodesic_error(const Eigen::MatrixX3d& V, const Eigen::MatrixXi& F,
+                                     const Eigen::MatrixX3d& Q,
+                                     const GeodesicErrorOptions& options = {});
+
 /// The part of E_geo that depends on the rest shape alone: the sources (the
 /// same as geodesic_error's) and their rows of G, kept in memory (sources x n
 /// doubles). A caller can compute it while the solve runs (the pipeline does

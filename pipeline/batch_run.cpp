@@ -89,8 +89,13 @@ double parse_metric_field(const std::string& field) {
 const char* const kResultsHeader =
     "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
     "surface_edge_ratio_max,inverted_tets,folded_edges_percent,dihedral_change_p999_degrees,"
+    "E_geo_surface,seconds,status";
+// results.csv before E_geo_surface, before the fold columns, and before the damage columns
+// (issue 44): still read.
+const char* const kResultsHeaderWithoutSurfaceGeo =
+    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
+    "surface_edge_ratio_max,inverted_tets,folded_edges_percent,dihedral_change_p999_degrees,"
     "seconds,status";
-// results.csv before the fold columns, and before the damage columns (issue 44): still read.
 const char* const kResultsHeaderWithoutFolds =
     "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
     "surface_edge_ratio_max,inverted_tets,seconds,status";
@@ -104,17 +109,18 @@ std::string format_row(const BatchRow& r) {
     << metric_field(r.E_geo) << ',' << metric_field(r.damaged_edges_percent) << ','
     << metric_field(r.surface_edge_ratio_p999) << ',' << metric_field(r.surface_edge_ratio_max)
     << ',' << metric_field(r.inverted_tets) << ',' << metric_field(r.folded_edges_percent) << ','
-    << metric_field(r.dihedral_change_p999) << ',' << r.seconds << ',' << csv_field(r.status);
+    << metric_field(r.dihedral_change_p999) << ',' << metric_field(r.E_geo_surface) << ','
+    << r.seconds << ',' << csv_field(r.status);
   return s.str();
 }
 
-// A row of 14 fields, of 12 (written before the fold columns) or of 8 (before
-// the damage columns).
+// A row of 15 fields, of 14 (written before E_geo_surface), of 12 (before the
+// fold columns) or of 8 (before the damage columns).
 BatchRow parse_row(const std::string& line, const std::string& where) {
   const std::vector<std::string> f = split_csv_line(line);
-  if (f.size() != 14 && f.size() != 12 && f.size() != 8)
-    throw InputError(where + ": expected 14 fields, got " + std::to_string(f.size()));
-  const bool damage = f.size() >= 12, folds = f.size() == 14;
+  if (f.size() != 15 && f.size() != 14 && f.size() != 12 && f.size() != 8)
+    throw InputError(where + ": expected 15 fields, got " + std::to_string(f.size()));
+  const bool damage = f.size() >= 12, folds = f.size() >= 14, surface_geo = f.size() == 15;
   BatchRow r{f[0], f[1], f[2], 0, 0, 0, 0, f.back()};
   try {
     r.E_rig = parse_metric_field(f[3]), r.E_str = parse_metric_field(f[4]);
@@ -129,6 +135,7 @@ BatchRow parse_row(const std::string& line, const std::string& where) {
       r.folded_edges_percent = parse_metric_field(f[10]);
       r.dihedral_change_p999 = parse_metric_field(f[11]);
     }
+    if (surface_geo) r.E_geo_surface = parse_metric_field(f[12]);
     r.seconds = std::stod(f[f.size() - 2]);
   } catch (const std::exception&) {
     throw InputError(where + ": a number field is not a number");
@@ -208,6 +215,7 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
       OutputTransaction outputs;  // a config's files all or none; its row in any case
       row.seconds = seconds_since(start);
       row.E_rig = r.metrics.E_rig, row.E_str = r.metrics.E_str, row.E_geo = r.metrics.E_geo;
+      row.E_geo_surface = r.metrics.E_geo_surface;
       row.damaged_edges_percent = r.metrics.damage.damaged_edges_percent;
       row.surface_edge_ratio_p999 = r.metrics.damage.ratio_p999;
       row.surface_edge_ratio_max = r.metrics.damage.ratio_max;
@@ -593,7 +601,8 @@ std::vector<BatchRow> read_results_csv(const std::string& path) {
   if (!in) throw InputError("cannot read " + path);
   std::string line;
   std::getline(in, line);
-  if (line.rfind(kResultsHeader, 0) != 0 && line.rfind(kResultsHeaderWithoutFolds, 0) != 0 &&
+  if (line.rfind(kResultsHeader, 0) != 0 && line.rfind(kResultsHeaderWithoutSurfaceGeo, 0) != 0 &&
+      line.rfind(kResultsHeaderWithoutFolds, 0) != 0 &&
       line.rfind(kResultsHeaderWithoutDamage, 0) != 0)
     throw InputError(path + ": not a results.csv (header " + line + ")");
   std::vector<BatchRow> rows;

@@ -58,6 +58,9 @@ struct BatchRow {
   /// 99.9th percentile of the change in degrees; NaN: unknown (as above).
   double folded_edges_percent = std::numeric_limits<double>::quiet_NaN();
   double dihedral_change_p999 = std::numeric_limits<double>::quiet_NaN();
+  /// E_geo over the surface alone (UnfoldMetrics::E_geo_surface); NaN: not computed
+  /// or unknown (as above).
+  double E_geo_surface = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// The class of a shape: its name without trailing digits and then without
@@ -80,15 +83,16 @@ std::vector<BatchRow> run_batch(const BatchOptions& options);
 
 /// Writes shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,
 /// surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,folded_edges_percent,
-/// dihedral_change_p999_degrees,seconds,status
+/// dihedral_change_p999_degrees,E_geo_surface,seconds,status
 /// (atomically); a metric not computed (NaN) is an empty field, and reads back
 /// as NaN.
 /// @throws OutputError
 void write_results_csv(const std::string& path, const std::vector<BatchRow>& rows);
 
 /// Reads a file written by write_results_csv, or by an earlier version without
-/// the damage columns (shape,class,method,E_rig,E_str,E_geo,seconds,status:
-/// those read as NaN). @throws InputError
+/// E_geo_surface, the fold columns or the damage columns
+/// (shape,class,method,E_rig,E_str,E_geo,seconds,status): those read as NaN.
+/// @throws InputError
 std::vector<BatchRow> read_results_csv(const std::string& path);
 
 /// Retrieval (retrieval.csv: method,framework,queries,nn,first_tier,

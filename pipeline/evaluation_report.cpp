@@ -36,10 +36,13 @@ std::vector<std::string> methods_of(const std::vector<BatchRow>& rows) {
   return methods;
 }
 
-double metric(const BatchRow& r, int k) { return k == 0 ? r.E_rig : k == 1 ? r.E_str : r.E_geo; }
+constexpr int kMetrics = 4;
+double metric(const BatchRow& r, int k) {
+  return k == 0 ? r.E_rig : k == 1 ? r.E_str : k == 2 ? r.E_geo : r.E_geo_surface;
+}
 // A row that has metric k: its run succeeded and computed it (metrics.compute).
 bool has_metric(const BatchRow& r, int k) { return r.status == "ok" && !std::isnan(metric(r, k)); }
-const char* kMetricNames[3] = {"E_rig", "E_str", "E_geo"};
+const char* kMetricNames[kMetrics] = {"E_rig", "E_str", "E_geo", "E_geo_surface"};
 
 std::string number(double x, const char* format = "%.4f") {
   char text[32];
@@ -229,7 +232,7 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
   std::set<std::string> classes;
   for (const auto& r : rows) classes.insert(r.shape_class);
   std::ostringstream md;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kMetrics; ++k) {
     md << "### Mean " << kMetricNames[k] << " per class (ok shapes that computed it / all)\n\n"
        << table_header({"class"}, methods);
     std::vector<std::string> row_classes(classes.begin(), classes.end());
@@ -276,7 +279,7 @@ std::string evaluation_report_markdown(const std::vector<ReportRun>& runs) {
 
 void write_cdf_plots(const std::vector<ReportRun>& runs, const std::string& dir) {
   const std::vector<BatchRow> rows = labelled_rows(runs);
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kMetrics; ++k) {
     std::vector<CdfSeries> series;
     for (const auto& m : methods_of(rows)) {
       std::vector<double> values;

@@ -20,7 +20,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                  {"beta", h.beta},
                                  {"energy", h.energy},
                                  {"edge_ratio", h.edge_ratio}});
-  // E_rig, E_str, E_geo not computed are NaN, written as null; E_geo_skipped is
+  // E_rig, E_str, E_geo (and E_geo_surface) not computed are NaN, written as null; E_geo_skipped is
   // null, or why E_geo was left out and how to ask for it.
   return JsonObject{
       {"metrics_computed", JsonArray(options.metrics.begin(), options.metrics.end())},
@@ -29,6 +29,7 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"E_str_exact", m.E_str_exact},
       {"E_geo", m.E_geo},
       {"E_geo_exact", m.E_geo_exact},
+      {"E_geo_surface", m.E_geo_surface},
       {"E_geo_skipped", m.E_geo_skipped.empty() ? Json(std::nan("")) : Json(m.E_geo_skipped)},
       {"edge_ratio", c.edge_ratio},
       {"inverted_tets", m.inverted_tets},

@@ -75,7 +75,7 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
   cascade.reached_band = true;
   UnfoldMetrics& m = merged.metrics;
   m.rigidity_per_vertex.resize(num_tet_vertices);
-  double edge_ratio_sum = 0, str_sum = 0, geo_sum = 0;
+  double edge_ratio_sum = 0, str_sum = 0, geo_sum = 0, surface_geo_sum = 0;
   Eigen::Index tet_row = 0;
   for (size_t c = 0; c < parts.size(); ++c) {
     const UnfoldResult& r = parts[c];
@@ -138,6 +138,7 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
     edge_ratio_sum += r.cascade.edge_ratio * r.num_edges;
     str_sum += r.metrics.E_str * double(r.tets.V.rows());
     geo_sum += r.metrics.E_geo * double(r.tets.V.rows());
+    surface_geo_sum += r.metrics.E_geo_surface * double(r.tets.num_surface_vertices);
     m.E_str_exact = m.E_str_exact && r.metrics.E_str_exact;
     m.E_geo_exact = m.E_geo_exact && r.metrics.E_geo_exact;
     m.inverted_tets += r.metrics.inverted_tets;
@@ -155,6 +156,7 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
   m.E_rig = m.rigidity_per_vertex.mean();  // E_rig is a mean over tet vertices (Eq. 8)
   m.E_str = str_sum / double(num_tet_vertices);
   m.E_geo = geo_sum / double(num_tet_vertices);
+  m.E_geo_surface = surface_geo_sum / double(num_surface);
   return merged;
 }
 

@@ -482,7 +482,7 @@ Stage measure() {
         const Eigen::MatrixX3d& Q = result.tet_canonical;
         UnfoldMetrics& m = result.metrics;
         constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
-        m.E_rig = m.E_str = m.E_geo = kNotComputed;
+        m.E_rig = m.E_str = m.E_geo = m.E_geo_surface = kNotComputed;
         m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
         if (computes_metric(options, "E_rig")) {
           const RigidityError rig = rigidity_error(graph, P, Q);
@@ -502,6 +502,9 @@ Stage measure() {
                                         : geodesic_error(graph, P, Q, options.geodesic_metric);
           m.E_geo = geo.value;
           m.E_geo_exact = geo.exact;
+          m.E_geo_surface = surface_geodesic_error(surface.V, triangulate_faces(surface),
+                                                   result.canonical.V, options.geodesic_metric)
+                                .value;
         }
         // Against the orientation the tets were made with.
         m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);

@@ -26,6 +26,12 @@ struct UnfoldMetrics {
   bool E_str_exact = true;  ///< false: estimated from stretch_samples random pairs
   double E_geo = 0;         ///< Eq. 10 with tet-edge-graph geodesics of the rest shape
   bool E_geo_exact = true;  ///< false: estimated from geodesic_landmarks source rows
+  /// Eq. 10 over the surface alone (its edges' geodesics, the canonical surface's
+  /// distances): the same vertices and geodesics whatever tets a method made, so it
+  /// compares methods where E_geo also weighs their interior vertices
+  /// (docs/method.md, metrics); computed with E_geo, NaN when not (or the surface's
+  /// edges fall apart)
+  double E_geo_surface = 0;
   /// why E_geo was left out though metrics.compute lists it (above
   /// metrics.geodesic_max_vertices) and how to ask for it; empty otherwise
   std::string E_geo_skipped;

@@ -69,15 +69,21 @@ TEST(MetricsSelection, OnlyTheAskedMetricsAreComputedAndTheyEqualAFullRun) {
             geodesic_error(build_edge_graph(int(all.tets.V.rows()), Eigen::MatrixXi(all.tets.T)),
                            all.tets.V, all.tet_canonical, defaults.geodesic_metric)
                 .value);
+  // Computed with it: the same over the surface's own edges and vertices alone.
+  EXPECT_EQ(all.metrics.E_geo_surface,
+            surface_geodesic_error(sphere.V, triangulate_faces(sphere), all.canonical.V,
+                                   defaults.geodesic_metric)
+                .value);
   Options some;
   some.metrics = {"E_rig", "E_str"};
   const UnfoldResult r = unfold_surface(sphere, some);
   EXPECT_EQ(r.metrics.E_rig, all.metrics.E_rig);
   EXPECT_EQ(r.metrics.E_str, all.metrics.E_str);
-  EXPECT_TRUE(std::isnan(r.metrics.E_geo));
+  EXPECT_TRUE(std::isnan(r.metrics.E_geo) && std::isnan(r.metrics.E_geo_surface));
   EXPECT_EQ(r.metrics.rigidity_per_vertex, all.metrics.rigidity_per_vertex);
   const std::string json = to_json_text(metrics_document(r, some));
   EXPECT_NE(json.find("\"E_geo\": null"), std::string::npos) << json.substr(0, 300);
+  EXPECT_NE(json.find("\"E_geo_surface\": null"), std::string::npos) << json.substr(0, 300);
   EXPECT_NE(json.find("\"metrics_computed\": [\"E_rig\", \"E_str\"]"), std::string::npos);
 
   Options none;
@@ -101,20 +107,23 @@ TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
   damaged.damaged_edges_percent = 1.25, damaged.surface_edge_ratio_p999 = 4.5;
   damaged.surface_edge_ratio_max = 213, damaged.inverted_tets = 3000;
   damaged.folded_edges_percent = 0.375, damaged.dihedral_change_p999 = 150;
+  damaged.E_geo_surface = 0.0625;
   write_results_csv(path, {{"cat0", "cat", "default", 0.5, 0.25, nan, 1.5, "ok"}, damaged});
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str().rfind("shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
                              "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,"
-                             "folded_edges_percent,dihedral_change_p999_degrees,seconds,status\n",
+                             "folded_edges_percent,dihedral_change_p999_degrees,E_geo_surface,"
+                             "seconds,status\n",
                              0),
             0u)
       << text.str();
-  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,,,,,,,1.5,ok"), std::string::npos)
+  EXPECT_NE(text.str().find("cat0,cat,default,0.5,0.25,,,,,,,,,1.5,ok"), std::string::npos)
       << text.str();
-  EXPECT_NE(text.str().find("cat1,cat,default,0.5,0.25,0.125,1.25,4.5,213,3000,0.375,150,2.5,ok"),
-            std::string::npos)
+  EXPECT_NE(
+      text.str().find("cat1,cat,default,0.5,0.25,0.125,1.25,4.5,213,3000,0.375,150,0.0625,2.5,ok"),
+      std::string::npos)
       << text.str();
   const std::vector<BatchRow> rows = read_results_csv(path);
   ASSERT_EQ(rows.size(), 2u);
@@ -128,11 +137,14 @@ TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
   EXPECT_TRUE(std::isnan(rows[0].folded_edges_percent));
   EXPECT_EQ(rows[1].folded_edges_percent, 0.375);
   EXPECT_EQ(rows[1].dihedral_change_p999, 150);
+  EXPECT_TRUE(std::isnan(rows[0].E_geo_surface));
+  EXPECT_EQ(rows[1].E_geo_surface, 0.0625);
   EXPECT_EQ(rows[1].seconds, 2.5);
   EXPECT_EQ(rows[1].status, "ok");
 }
 
-// A results.csv written before the damage or the fold columns still reads: those are NaN.
+// A results.csv written before the damage or the fold columns, or before
+// E_geo_surface, still reads: those are NaN.
 TEST(MetricsSelection, ResultsCsvWithoutTheDamageColumnsStillReads) {
   const test::TempDir dir;
   const std::string path = dir.file("results.csv");
@@ -156,6 +168,17 @@ TEST(MetricsSelection, ResultsCsvWithoutTheDamageColumnsStillReads) {
   EXPECT_EQ(before_folds[0].seconds, 2.5);
   EXPECT_TRUE(std::isnan(before_folds[0].folded_edges_percent) &&
               std::isnan(before_folds[0].dihedral_change_p999));
+  // And one written before E_geo_surface.
+  test::write_bytes(path,
+                    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
+                    "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,"
+                    "folded_edges_percent,dihedral_change_p999_degrees,seconds,status\n"
+                    "cat1,cat,paper,0.5,0.25,0.125,1.25,4.5,213,3000,0.375,150,2.5,ok\n");
+  const std::vector<BatchRow> before_surface = read_results_csv(path);
+  ASSERT_EQ(before_surface.size(), 1u);
+  EXPECT_EQ(before_surface[0].dihedral_change_p999, 150);
+  EXPECT_EQ(before_surface[0].seconds, 2.5);
+  EXPECT_TRUE(std::isnan(before_surface[0].E_geo_surface));
 }
 
 TEST(MetricsSelection, UnfoldFlagWritesNullAndSaysNotComputed) {

@@ -14,6 +14,7 @@
 #include "metrics/rigid_alignment.h"
 #include "metrics/rigidity_error.h"
 #include "metrics/stretch_error.h"
+#include "test_meshes.h"
 
 namespace unfold {
 namespace {
@@ -271,6 +272,30 @@ TEST(MetricGeodesic, PrecomputedRowsGiveTheOnePassResultExactly) {
   }
   EXPECT_THROW(geodesic_error_solve(geodesic_error_precomputation(g, P), Q.topRows(10)),
                UsageError);
+}
+
+// Over a surface alone: the graph function on the faces' edges, the same for a
+// similarity of the deformed surface, NaN where the faces fall apart.
+TEST(MetricGeodesic, OverASurfaceAlone) {
+  const SurfaceMesh sphere = test::uv_sphere(8, 12);
+  const Eigen::MatrixX3i F = triangulate_faces(sphere);
+  Eigen::MatrixX3d bent = sphere.V;
+  for (Eigen::Index i = 0; i < bent.rows(); ++i) bent(i, 2) += 0.5 * bent(i, 0) * bent(i, 0);
+  const double value = surface_geodesic_error(sphere.V, F, bent).value;
+  EXPECT_EQ(value, geodesic_error(build_edge_graph(int(sphere.V.rows()), Eigen::MatrixXi(F)),
+                                  sphere.V, bent)
+                       .value);
+  EXPECT_GT(value, surface_geodesic_error(sphere.V, F, sphere.V).value);
+  std::mt19937 rng(5);
+  EXPECT_NEAR(surface_geodesic_error(sphere.V, F, 2.5 * rigidly_moved(bent, rng)).value, value,
+              1e-12);
+  // Two spheres side by side: their faces' edges join no vertex of one to the other.
+  Eigen::MatrixX3d two(2 * sphere.V.rows(), 3);
+  two << sphere.V, sphere.V.rowwise() + Eigen::RowVector3d(3, 0, 0);
+  Eigen::MatrixXi both(2 * F.rows(), 3);
+  both << F, F.array() + int(sphere.V.rows());
+  EXPECT_TRUE(std::isnan(surface_geodesic_error(two, both, two).value));
+  EXPECT_THROW(surface_geodesic_error(sphere.V, F, bent.topRows(3)), UsageError);
 }
 
 TEST(MetricGeodesic, RejectsDisconnectedGraph) {

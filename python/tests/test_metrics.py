@@ -32,6 +32,10 @@ def test_metrics_equal_the_runs_metrics(small_result):
     assert metrics.e_rig(P, Q, E) == pytest.approx(r.metrics["E_rig"], rel=1e-12)
     assert metrics.e_str(P, Q) == pytest.approx(r.metrics["E_str"], rel=1e-12)
     assert metrics.e_geo(P, Q, E) == pytest.approx(r.metrics["E_geo"], rel=1e-12)
+    # Over the surface alone: its own edges' geodesics, the canonical surface's distances.
+    n = len(r.vertices)
+    assert metrics.e_geo(P[:n], r.vertices, r.faces) == pytest.approx(r.metrics["E_geo_surface"],
+                                                                        rel=1e-12)
     # The tets alone leave some of the surface's edges out: another number.
     assert metrics.e_rig(P, Q, r.tets) != pytest.approx(r.metrics["E_rig"], rel=1e-6)
 
