@@ -148,37 +148,37 @@ TEST(MetricsSelection, ResultsCsvLeavesAMetricNotComputedEmpty) {
 TEST(MetricsSelection, ResultsCsvWithoutTheDamageColumnsStillReads) {
   const test::TempDir dir;
   const std::string path = dir.file("results.csv");
-  test::write_bytes(path,
-                    "shape,class,method,E_rig,E_str,E_geo,seconds,status\n"
-                    "cat0,cat,default,0.5,0.25,,1.5,ok\n");
-  const std::vector<BatchRow> rows = read_results_csv(path);
-  ASSERT_EQ(rows.size(), 1u);
-  EXPECT_EQ(rows[0].E_str, 0.25);
-  EXPECT_EQ(rows[0].seconds, 1.5);
-  EXPECT_EQ(rows[0].status, "ok");
-  EXPECT_TRUE(std::isnan(rows[0].damaged_edges_percent) && std::isnan(rows[0].inverted_tets));
+  // The one row of a results.csv of that header.
+  const auto read_one = [&](const std::string& header, const std::string& row) {
+    test::write_bytes(path, header + "\n" + row + "\n");
+    const std::vector<BatchRow> rows = read_results_csv(path);
+    EXPECT_EQ(rows.size(), 1u);
+    return rows.empty() ? BatchRow{} : rows[0];
+  };
+  const BatchRow before_damage = read_one("shape,class,method,E_rig,E_str,E_geo,seconds,status",
+                                          "cat0,cat,default,0.5,0.25,,1.5,ok");
+  EXPECT_EQ(before_damage.E_str, 0.25);
+  EXPECT_EQ(before_damage.seconds, 1.5);
+  EXPECT_EQ(before_damage.status, "ok");
+  EXPECT_TRUE(std::isnan(before_damage.damaged_edges_percent) &&
+              std::isnan(before_damage.inverted_tets));
   // And one written before the fold columns: those alone are NaN.
-  test::write_bytes(path,
-                    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
-                    "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,seconds,status\n"
-                    "cat1,cat,paper,0.5,0.25,0.125,1.25,4.5,213,3000,2.5,ok\n");
-  const std::vector<BatchRow> before_folds = read_results_csv(path);
-  ASSERT_EQ(before_folds.size(), 1u);
-  EXPECT_EQ(before_folds[0].inverted_tets, 3000);
-  EXPECT_EQ(before_folds[0].seconds, 2.5);
-  EXPECT_TRUE(std::isnan(before_folds[0].folded_edges_percent) &&
-              std::isnan(before_folds[0].dihedral_change_p999));
+  const std::string damage_header =
+      "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,surface_edge_ratio_p999,"
+      "surface_edge_ratio_max,inverted_tets,";
+  const BatchRow before_folds = read_one(damage_header + "seconds,status",
+                                         "cat1,cat,paper,0.5,0.25,0.125,1.25,4.5,213,3000,2.5,ok");
+  EXPECT_EQ(before_folds.inverted_tets, 3000);
+  EXPECT_EQ(before_folds.seconds, 2.5);
+  EXPECT_TRUE(std::isnan(before_folds.folded_edges_percent) &&
+              std::isnan(before_folds.dihedral_change_p999));
   // And one written before E_geo_surface.
-  test::write_bytes(path,
-                    "shape,class,method,E_rig,E_str,E_geo,damaged_edges_percent,"
-                    "surface_edge_ratio_p999,surface_edge_ratio_max,inverted_tets,"
-                    "folded_edges_percent,dihedral_change_p999_degrees,seconds,status\n"
-                    "cat1,cat,paper,0.5,0.25,0.125,1.25,4.5,213,3000,0.375,150,2.5,ok\n");
-  const std::vector<BatchRow> before_surface = read_results_csv(path);
-  ASSERT_EQ(before_surface.size(), 1u);
-  EXPECT_EQ(before_surface[0].dihedral_change_p999, 150);
-  EXPECT_EQ(before_surface[0].seconds, 2.5);
-  EXPECT_TRUE(std::isnan(before_surface[0].E_geo_surface));
+  const BatchRow before_surface =
+      read_one(damage_header + "folded_edges_percent,dihedral_change_p999_degrees,seconds,status",
+               "cat1,cat,paper,0.5,0.25,0.125,1.25,4.5,213,3000,0.375,150,2.5,ok");
+  EXPECT_EQ(before_surface.dihedral_change_p999, 150);
+  EXPECT_EQ(before_surface.seconds, 2.5);
+  EXPECT_TRUE(std::isnan(before_surface.E_geo_surface));
 }
 
 TEST(MetricsSelection, UnfoldFlagWritesNullAndSaysNotComputed) {
