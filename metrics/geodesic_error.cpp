@@ -138,18 +138,37 @@ GeodesicError geodesic_error_solve(const GeodesicRows& rows, const Eigen::Matrix
   return finish(row, rows.exact);
 }
 
+namespace {
+
+// The faces' edge graph, or an empty one when its edges do not join every vertex.
+EdgeGraph connected_surface_graph(const Eigen::MatrixX3d& V, const Eigen::MatrixXi& F) {
+  EdgeGraph graph = build_edge_graph(int(V.rows()), F);
+  if (V.rows() < 2 || connected_components(graph) != 1) return EdgeGraph{};
+  return graph;
+}
+
+}  // namespace
+
 GeodesicError surface_geodesic_error(const Eigen::MatrixX3d& V, const Eigen::MatrixXi& F,
                                      const Eigen::MatrixX3d& Q,
                                      const GeodesicErrorOptions& options) {
   if (Q.rows() != V.rows())
     throw UsageError("surface_geodesic_error: need V and Q with one row per surface vertex");
-  const EdgeGraph graph = build_edge_graph(int(V.rows()), F);
-  if (V.rows() < 2 || connected_components(graph) != 1) {
+  const EdgeGraph graph = connected_surface_graph(V, F);
+  if (graph.num_vertices == 0) {
     GeodesicError none;
     none.value = std::numeric_limits<double>::quiet_NaN();
     return none;
   }
   return geodesic_error(graph, V, Q, options);
+}
+
+GeodesicRows surface_geodesic_error_precomputation(const Eigen::MatrixX3d& V,
+                                                   const Eigen::MatrixXi& F,
+                                                   const GeodesicErrorOptions& options) {
+  const EdgeGraph graph = connected_surface_graph(V, F);
+  if (graph.num_vertices == 0) return GeodesicRows{};
+  return geodesic_error_precomputation(graph, V, options);
 }
 
 }  // namespace unfold

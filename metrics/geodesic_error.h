@@ -67,4 +67,13 @@ GeodesicRows geodesic_error_precomputation(const EdgeGraph& graph, const Eigen::
 /// @throws UsageError on a size mismatch, InputError if all points coincide
 GeodesicError geodesic_error_solve(const GeodesicRows& rows, const Eigen::MatrixX3d& Q);
 
+/// surface_geodesic_error's rows of the rest surface (geodesic_error_precomputation on
+/// the faces' edge graph), for geodesic_error_solve with the deformed surface: the same
+/// value, bit for bit.
+/// @return no sources when the faces' edges do not join every vertex (E_geo over the
+///         surface is then NaN)
+GeodesicRows surface_geodesic_error_precomputation(const Eigen::MatrixX3d& V,
+                                                   const Eigen::MatrixXi& F,
+                                                   const GeodesicErrorOptions& options = {});
+
 }  // namespace unfold

@@ -61,8 +61,10 @@ std::string geodesic_skipped(const Options& options, int num_vertices) {
          "); --metrics E_rig,E_str,E_geo (or metrics.geodesic_max_vertices: 0) computes it";
 }
 
-std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                              const Options& options) {
+std::future<UnfoldState::GeodesicRowsOfBoth> start_geodesic_rows(const EdgeGraph& graph,
+                                                                 const Eigen::MatrixX3d& P,
+                                                                 const SurfaceMesh& surface,
+                                                                 const Options& options) {
   const GeodesicErrorOptions& geo = options.geodesic_metric;
   const int n = graph.num_vertices;
   const double rows = n <= geo.exact_limit ? n : std::min(geo.sources, n);
@@ -70,9 +72,11 @@ std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eige
       options.method == "lsmds" || n < 2 || n >= kMinParallelRows ||
       rows * n * sizeof(double) > (32 << 20))
     return {};
-  return std::async(std::launch::async, [&graph, &P, geo] {
+  return std::async(std::launch::async, [&graph, &P, &surface, geo] {
     omp_set_num_threads(1);
-    return geodesic_error_precomputation(graph, P, geo);
+    return UnfoldState::GeodesicRowsOfBoth{
+        geodesic_error_precomputation(graph, P, geo),
+        surface_geodesic_error_precomputation(surface.V, triangulate_faces(surface), geo)};
   });
 }
 
@@ -232,7 +236,7 @@ Stage solve_edges() {
                                integrates(s.options) ? s.options.integrate.surface_edges : 0.0);
     append(&s.result.warnings, s.edges.warnings);
     s.result.num_edges = s.edges.graph.num_edges();
-    s.geodesic_rows = start_geodesic_rows(s.edges.graph, s.mesh.tets.V, s.options);
+    s.geodesic_rows = start_geodesic_rows(s.edges.graph, s.mesh.tets.V, s.mesh.surface, s.options);
   });
 }
 
@@ -497,14 +501,22 @@ Stage measure() {
         m.E_geo_skipped = geodesic_skipped(options, int(P.rows()));
         if (!m.E_geo_skipped.empty()) LOG(INFO) << m.E_geo_skipped;
         if (computes_metric(options, "E_geo") && m.E_geo_skipped.empty()) {
-          const GeodesicError geo = s.geodesic_rows.valid()
-                                        ? geodesic_error_solve(s.geodesic_rows.get(), Q)
-                                        : geodesic_error(graph, P, Q, options.geodesic_metric);
-          m.E_geo = geo.value;
-          m.E_geo_exact = geo.exact;
-          m.E_geo_surface = surface_geodesic_error(surface.V, triangulate_faces(surface),
-                                                   result.canonical.V, options.geodesic_metric)
-                                .value;
+          if (s.geodesic_rows.valid()) {
+            const UnfoldState::GeodesicRowsOfBoth rows = s.geodesic_rows.get();
+            const GeodesicError geo = geodesic_error_solve(rows.tets, Q);
+            m.E_geo = geo.value;
+            m.E_geo_exact = geo.exact;
+            m.E_geo_surface = rows.surface.sources.empty()
+                                  ? kNotComputed
+                                  : geodesic_error_solve(rows.surface, result.canonical.V).value;
+          } else {
+            const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
+            m.E_geo = geo.value;
+            m.E_geo_exact = geo.exact;
+            m.E_geo_surface = surface_geodesic_error(surface.V, triangulate_faces(surface),
+                                                     result.canonical.V, options.geodesic_metric)
+                                  .value;
+          }
         }
         // Against the orientation the tets were made with.
         m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);
