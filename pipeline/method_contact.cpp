@@ -16,6 +16,7 @@ Method contact_method(const Options& options) {
       // The surface solve needs no tets: it runs while TetGen (a process of
       // its own) makes the input's.
       tetrahedralize_the_input().unless(contact_faces_found).on_the_side(kForkAlongsideThreads),
+      surface_geodesic_rows(),
       lambda2_and_beta(surface),
       cascade(surface),
   };

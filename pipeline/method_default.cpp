@@ -17,6 +17,7 @@ Method default_method(const Options& options) {
       check_and_simplify(),
       // An open surface has no shape to tetrahedralize: its edge graph, or the fallback.
       tetrahedralize_the_input().when(surface_open),
+      surface_geodesic_rows(),
   };
   // The anchor unit depends on the surface alone: beside the one-threaded
   // solve of a small surface, else beside the soft joints' filter (three

@@ -11,6 +11,7 @@ Method surface_method(const Options& options) {
   StageList stages = {
       check_and_simplify(),
       tetrahedralize_the_input(),
+      surface_geodesic_rows(),
       // a preparation shared with a method that tetrahedralizes the unfolded shape
       tetrahedralize_deferred().when(tets_deferred),
       solve_edges(),

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <future>
+#include <optional>
 
 #include "config/options.h"
 #include "mesh/coarsen_surface.h"
@@ -28,14 +29,12 @@ struct UnfoldState {
   /// what the unfolding found; the metrics stage moves mesh's surface, tets,
   /// report and warnings (first) into it
   UnfoldResult result;
-  bool contact_bridge = false;  ///< some input tet bridges a contact (contact check)
-  SolveEdges edges;             ///< the tets' edges every stage after them solves on
-  /// E_geo's rows of the tets and of the surface (E_geo_surface; no sources where the
-  /// surface's edges fall apart), computed beside the solve
-  struct GeodesicRowsOfBoth {
-    GeodesicRows tets, surface;
-  };
-  std::future<GeodesicRowsOfBoth> geodesic_rows;
+  bool contact_bridge = false;              ///< some input tet bridges a contact (contact check)
+  SolveEdges edges;                         ///< the tets' edges every stage after them solves on
+  std::future<GeodesicRows> geodesic_rows;  ///< E_geo's rows, computed beside the solve
+  /// E_geo_surface's rows, computed beside the solve (no sources: the surface's edges
+  /// fall apart); none: computed with the metrics
+  std::optional<GeodesicRows> surface_geodesic_rows;
   /// where the cascade solves: the surface (domain surface) or the tets and their edges
   TetMesh cascade_mesh;
   SolveEdges cascade_edges;

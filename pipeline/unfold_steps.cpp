@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/fork_safety.h"
 #include "core/parallel.h"
 #include "energies/soft_joint_factors.h"
 #include "mesh/check_surface_mesh.h"
@@ -46,11 +47,6 @@ void append(std::vector<std::string>* to, const std::vector<std::string>& from) 
   to->insert(to->end(), from.begin(), from.end());
 }
 
-// E_geo's rows of G depend on the rest shape alone. Where the solve runs on
-// one thread (fewer than kMinParallelRows vertices; LSMDS excepted, which runs
-// Dijkstras of its own in parallel), they are computed on the other core
-// meanwhile, on one thread so that nothing waits on a shared core; the rows
-// must fit in 32 MB. Otherwise no future: E_geo after the solve, in parallel.
 // Why E_geo is left out though asked for (more tet vertices than
 // metrics.geodesic_max_vertices), and how to get it; "" when it is computed.
 std::string geodesic_skipped(const Options& options, int num_vertices) {
@@ -61,22 +57,26 @@ std::string geodesic_skipped(const Options& options, int num_vertices) {
          "); --metrics E_rig,E_str,E_geo (or metrics.geodesic_max_vertices: 0) computes it";
 }
 
-std::future<UnfoldState::GeodesicRowsOfBoth> start_geodesic_rows(const EdgeGraph& graph,
-                                                                 const Eigen::MatrixX3d& P,
-                                                                 const SurfaceMesh& surface,
-                                                                 const Options& options) {
+// E_geo's rows of G (and E_geo_surface's) depend on the rest shape alone. Where
+// the solve runs on one thread (fewer than kMinParallelRows vertices; LSMDS
+// excepted, which runs Dijkstras of its own in parallel), they are computed on
+// the other core meanwhile, on one thread so that nothing waits on a shared
+// core; the rows must fit in 32 MB. Otherwise E_geo after the solve, in
+// parallel. Whether that is so for n vertices:
+bool geodesic_rows_beside(const Options& options, int n) {
   const GeodesicErrorOptions& geo = options.geodesic_metric;
-  const int n = graph.num_vertices;
   const double rows = n <= geo.exact_limit ? n : std::min(geo.sources, n);
-  if (!computes_metric(options, "E_geo") || !geodesic_skipped(options, n).empty() ||
-      options.method == "lsmds" || n < 2 || n >= kMinParallelRows ||
-      rows * n * sizeof(double) > (32 << 20))
-    return {};
-  return std::async(std::launch::async, [&graph, &P, &surface, geo] {
+  return computes_metric(options, "E_geo") && geodesic_skipped(options, n).empty() &&
+         options.method != "lsmds" && n >= 2 && n < kMinParallelRows &&
+         rows * n * sizeof(double) <= (32 << 20);
+}
+
+std::future<GeodesicRows> start_geodesic_rows(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                              const Options& options) {
+  if (!geodesic_rows_beside(options, graph.num_vertices)) return {};
+  return std::async(std::launch::async, [&graph, &P, geo = options.geodesic_metric] {
     omp_set_num_threads(1);
-    return UnfoldState::GeodesicRowsOfBoth{
-        geodesic_error_precomputation(graph, P, geo),
-        surface_geodesic_error_precomputation(surface.V, triangulate_faces(surface), geo)};
+    return geodesic_error_precomputation(graph, P, geo);
   });
 }
 
@@ -236,7 +236,7 @@ Stage solve_edges() {
                                integrates(s.options) ? s.options.integrate.surface_edges : 0.0);
     append(&s.result.warnings, s.edges.warnings);
     s.result.num_edges = s.edges.graph.num_edges();
-    s.geodesic_rows = start_geodesic_rows(s.edges.graph, s.mesh.tets.V, s.mesh.surface, s.options);
+    s.geodesic_rows = start_geodesic_rows(s.edges.graph, s.mesh.tets.V, s.options);
   });
 }
 
@@ -411,6 +411,19 @@ Stage scf_solve() {
       StagePart::unfold, StageTimer::cascade);
 }
 
+Stage surface_geodesic_rows() {
+  return step("metrics: the surface's geodesic rows",
+              [](UnfoldState& s) {
+                omp_set_num_threads(1);
+                s.surface_geodesic_rows = surface_geodesic_error_precomputation(
+                    s.mesh.surface.V, triangulate_faces(s.mesh.surface), s.options.geodesic_metric);
+              })
+      .when([](const UnfoldState& s) {
+        return geodesic_rows_beside(s.options, int(s.mesh.surface.V.rows()));
+      })
+      .on_the_side(kForkAlongsideThreads);
+}
+
 Stage anchor_unit() {
   return step("integration: anchor lambda_2",
               [](UnfoldState& s) { s.anchor_lambda2 = anchor_lambda2(s.mesh.surface); });
@@ -459,74 +472,74 @@ Stage untangle() {
 
 Stage measure() {
   return step(
-      "metrics",
-      [](UnfoldState& s) {
-        const Options& options = s.options;
-        UnfoldResult& result = s.result;
-        const SurfaceMesh& surface = s.mesh.surface;
-        const TetMesh& tets = s.mesh.tets;  // moved last: E_geo's rows read it until their get()
-        result.warnings.insert(result.warnings.begin(), s.mesh.warnings.begin(),
-                               s.mesh.warnings.end());
-        if (!result.cascade.reached_band)
-          result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
-                                    " did not reach the band within " +
-                                    std::to_string(options.cascade.num_cascades) + " cascades");
-        if (!result.cascade.bounded)
-          result.warnings.push_back("beta was below the boundedness bound in some cascade");
-        // Back where the input was: the solve fixes only shape, not translation.
-        result.tet_canonical = result.cascade.positions;
-        result.tet_canonical.rowwise() += tets.V.colwise().mean();
-        result.canonical.faces = surface.faces;
-        result.canonical.V = result.tet_canonical.topRows(tets.num_surface_vertices);
-        if (result.skeleton_canonical.rows() > 0)
-          result.skeleton_canonical.rowwise() += tets.V.colwise().mean();
+             "metrics",
+             [](UnfoldState& s) {
+               const Options& options = s.options;
+               UnfoldResult& result = s.result;
+               const SurfaceMesh& surface = s.mesh.surface;
+               const TetMesh& tets =
+                   s.mesh.tets;  // moved last: E_geo's rows read it until their get()
+               result.warnings.insert(result.warnings.begin(), s.mesh.warnings.begin(),
+                                      s.mesh.warnings.end());
+               if (!result.cascade.reached_band)
+                 result.warnings.push_back(
+                     "the edge ratio " + std::to_string(result.cascade.edge_ratio) +
+                     " did not reach the band within " +
+                     std::to_string(options.cascade.num_cascades) + " cascades");
+               if (!result.cascade.bounded)
+                 result.warnings.push_back("beta was below the boundedness bound in some cascade");
+               // Back where the input was: the solve fixes only shape, not translation.
+               result.tet_canonical = result.cascade.positions;
+               result.tet_canonical.rowwise() += tets.V.colwise().mean();
+               result.canonical.faces = surface.faces;
+               result.canonical.V = result.tet_canonical.topRows(tets.num_surface_vertices);
+               if (result.skeleton_canonical.rows() > 0)
+                 result.skeleton_canonical.rowwise() += tets.V.colwise().mean();
 
-        const EdgeGraph& graph = s.edges.graph;
-        const Eigen::MatrixX3d& P = tets.V;
-        const Eigen::MatrixX3d& Q = result.tet_canonical;
-        UnfoldMetrics& m = result.metrics;
-        constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
-        m.E_rig = m.E_str = m.E_geo = m.E_geo_surface = kNotComputed;
-        m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
-        if (computes_metric(options, "E_rig")) {
-          const RigidityError rig = rigidity_error(graph, P, Q);
-          m.E_rig = rig.mean;
-          m.rigidity_per_vertex = rig.per_vertex;
-        }
-        if (computes_metric(options, "E_str")) {
-          const StretchError str = stretch_error(P, Q, options.stretch_metric);
-          m.E_str = str.value;
-          m.E_str_exact = str.exact;
-        }
-        m.E_geo_skipped = geodesic_skipped(options, int(P.rows()));
-        if (!m.E_geo_skipped.empty()) LOG(INFO) << m.E_geo_skipped;
-        if (computes_metric(options, "E_geo") && m.E_geo_skipped.empty()) {
-          if (s.geodesic_rows.valid()) {
-            const UnfoldState::GeodesicRowsOfBoth rows = s.geodesic_rows.get();
-            const GeodesicError geo = geodesic_error_solve(rows.tets, Q);
-            m.E_geo = geo.value;
-            m.E_geo_exact = geo.exact;
-            m.E_geo_surface = rows.surface.sources.empty()
-                                  ? kNotComputed
-                                  : geodesic_error_solve(rows.surface, result.canonical.V).value;
-          } else {
-            const GeodesicError geo = geodesic_error(graph, P, Q, options.geodesic_metric);
-            m.E_geo = geo.value;
-            m.E_geo_exact = geo.exact;
-            m.E_geo_surface = surface_geodesic_error(surface.V, triangulate_faces(surface),
-                                                     result.canonical.V, options.geodesic_metric)
-                                  .value;
-          }
-        }
-        // Against the orientation the tets were made with.
-        m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);
-        m.damage = surface_damage(surface.V, result.canonical.V, surface.faces);
-        m.folds = surface_folds(surface.V, result.canonical.V, triangulate_faces(surface));
-        result.surface = std::move(s.mesh.surface);
-        result.tets = std::move(s.mesh.tets);
-        result.tet_report = s.mesh.tet_report;
-      },
-      StagePart::metrics);
+               const EdgeGraph& graph = s.edges.graph;
+               const Eigen::MatrixX3d& P = tets.V;
+               const Eigen::MatrixX3d& Q = result.tet_canonical;
+               UnfoldMetrics& m = result.metrics;
+               constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+               m.E_rig = m.E_str = m.E_geo = m.E_geo_surface = kNotComputed;
+               m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
+               if (computes_metric(options, "E_rig")) {
+                 const RigidityError rig = rigidity_error(graph, P, Q);
+                 m.E_rig = rig.mean;
+                 m.rigidity_per_vertex = rig.per_vertex;
+               }
+               if (computes_metric(options, "E_str")) {
+                 const StretchError str = stretch_error(P, Q, options.stretch_metric);
+                 m.E_str = str.value;
+                 m.E_str_exact = str.exact;
+               }
+               m.E_geo_skipped = geodesic_skipped(options, int(P.rows()));
+               if (!m.E_geo_skipped.empty()) LOG(INFO) << m.E_geo_skipped;
+               if (computes_metric(options, "E_geo") && m.E_geo_skipped.empty()) {
+                 const GeodesicError geo =
+                     s.geodesic_rows.valid() ? geodesic_error_solve(s.geodesic_rows.get(), Q)
+                                             : geodesic_error(graph, P, Q, options.geodesic_metric);
+                 m.E_geo = geo.value;
+                 m.E_geo_exact = geo.exact;
+                 const std::optional<GeodesicRows>& rows = s.surface_geodesic_rows;
+                 m.E_geo_surface =
+                     !rows ? surface_geodesic_error(surface.V, triangulate_faces(surface),
+                                                    result.canonical.V, options.geodesic_metric)
+                                 .value
+                     : rows->sources.empty()
+                         ? kNotComputed
+                         : geodesic_error_solve(*rows, result.canonical.V).value;
+               }
+               // Against the orientation the tets were made with.
+               m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);
+               m.damage = surface_damage(surface.V, result.canonical.V, surface.faces);
+               m.folds = surface_folds(surface.V, result.canonical.V, triangulate_faces(surface));
+               result.surface = std::move(s.mesh.surface);
+               result.tets = std::move(s.mesh.tets);
+               result.tet_report = s.mesh.tet_report;
+             },
+             StagePart::metrics)
+      .joining();
 }
 
 bool surface_open(const UnfoldState& state) { return state.open; }

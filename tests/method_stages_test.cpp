@@ -37,11 +37,12 @@ TEST(MethodStages, TheDefaultConfigListsTheDefaultsStages) {
   EXPECT_EQ(
       stage_names(m.stages),
       (std::vector<std::string>{
-          "check and simplify", "tetrahedralize the input", "integration: anchor lambda_2",
-          "surface: lambda_2 and beta", "surface: cascade", "soft joints: lambda_2 and beta",
-          "soft joints: cascade", "integration: anchor lambda_2", "soft joints: filter",
-          "surface: to full resolution", "tets of the unfolded shape", "given tets' unfolded shape",
-          "edges", "interior placement", "integration", "anchored steps", "untangle", "metrics"}));
+          "check and simplify", "tetrahedralize the input", "metrics: the surface's geodesic rows",
+          "integration: anchor lambda_2", "surface: lambda_2 and beta", "surface: cascade",
+          "soft joints: lambda_2 and beta", "soft joints: cascade", "integration: anchor lambda_2",
+          "soft joints: filter", "surface: to full resolution", "tets of the unfolded shape",
+          "given tets' unfolded shape", "edges", "interior placement", "integration",
+          "anchored steps", "untangle", "metrics"}));
 }
 
 TEST(MethodStages, ThePaperConfigListsThePapersStages) {
@@ -49,6 +50,7 @@ TEST(MethodStages, ThePaperConfigListsThePapersStages) {
   EXPECT_EQ(m.name, "paper");
   EXPECT_EQ(stage_names(m.stages),
             (std::vector<std::string>{"check and simplify", "tetrahedralize the input",
+                                      "metrics: the surface's geodesic rows",
                                       "tetrahedralize the input (deferred)", "edges",
                                       "lambda_2 and beta", "cascade", "metrics"}));
 }
@@ -76,11 +78,12 @@ TEST(MethodStages, TheDriverTimesEveryStageOnceInOrder) {
   const Options default_options = load_options(kStageConfigs + "default.yaml");
   const UnfoldResult d = unfold_surface(shape, default_options);
   EXPECT_EQ(stage_names_run(d.stage_seconds),
-            (std::vector<std::string>{"check and simplify", "integration: anchor lambda_2",
-                                      "surface: lambda_2 and beta", "surface: cascade",
-                                      "soft joints: lambda_2 and beta", "soft joints: cascade",
-                                      "soft joints: filter", "tets of the unfolded shape", "edges",
-                                      "integration", "anchored steps", "untangle", "metrics"}));
+            (std::vector<std::string>{"check and simplify", "metrics: the surface's geodesic rows",
+                                      "integration: anchor lambda_2", "surface: lambda_2 and beta",
+                                      "surface: cascade", "soft joints: lambda_2 and beta",
+                                      "soft joints: cascade", "soft joints: filter",
+                                      "tets of the unfolded shape", "edges", "integration",
+                                      "anchored steps", "untangle", "metrics"}));
   for (const StageTime& t : d.stage_seconds) EXPECT_GE(t.seconds, 0) << t.name;
   EXPECT_DOUBLE_EQ(d.seconds_prepare, stage_seconds_sum(d.stage_seconds, {"check and simplify"}));
   EXPECT_DOUBLE_EQ(d.seconds_lambda2,
@@ -100,6 +103,7 @@ TEST(MethodStages, TheDriverTimesEveryStageOnceInOrder) {
   const UnfoldResult p = unfold_surface(shape, paper);
   const std::vector<std::string> paper_stages{"check and simplify",
                                               "tetrahedralize the input",
+                                              "metrics: the surface's geodesic rows",
                                               "edges",
                                               "lambda_2 and beta",
                                               "cascade",
