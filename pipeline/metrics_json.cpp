@@ -20,8 +20,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
                                  {"beta", h.beta},
                                  {"energy", h.energy},
                                  {"edge_ratio", h.edge_ratio}});
-  // E_rig, E_str, E_geo (and E_geo_surface) not computed are NaN, written as null; E_geo_skipped is
-  // null, or why E_geo was left out and how to ask for it.
+  // E_rig, E_str, E_geo and E_geo_surface not computed are NaN, written as null;
+  // E_geo_skipped is null, or why E_geo was left out and how to ask for it.
   return JsonObject{
       {"metrics_computed", JsonArray(options.metrics.begin(), options.metrics.end())},
       {"E_rig", m.E_rig},

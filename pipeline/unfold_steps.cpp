@@ -472,74 +472,71 @@ Stage untangle() {
 
 Stage measure() {
   return step(
-             "metrics",
-             [](UnfoldState& s) {
-               const Options& options = s.options;
-               UnfoldResult& result = s.result;
-               const SurfaceMesh& surface = s.mesh.surface;
-               const TetMesh& tets =
-                   s.mesh.tets;  // moved last: E_geo's rows read it until their get()
-               result.warnings.insert(result.warnings.begin(), s.mesh.warnings.begin(),
-                                      s.mesh.warnings.end());
-               if (!result.cascade.reached_band)
-                 result.warnings.push_back(
-                     "the edge ratio " + std::to_string(result.cascade.edge_ratio) +
-                     " did not reach the band within " +
-                     std::to_string(options.cascade.num_cascades) + " cascades");
-               if (!result.cascade.bounded)
-                 result.warnings.push_back("beta was below the boundedness bound in some cascade");
-               // Back where the input was: the solve fixes only shape, not translation.
-               result.tet_canonical = result.cascade.positions;
-               result.tet_canonical.rowwise() += tets.V.colwise().mean();
-               result.canonical.faces = surface.faces;
-               result.canonical.V = result.tet_canonical.topRows(tets.num_surface_vertices);
-               if (result.skeleton_canonical.rows() > 0)
-                 result.skeleton_canonical.rowwise() += tets.V.colwise().mean();
+      "metrics",
+      [](UnfoldState& s) {
+        const Options& options = s.options;
+        UnfoldResult& result = s.result;
+        const SurfaceMesh& surface = s.mesh.surface;
+        const Eigen::MatrixX3i faces = triangulate_faces(surface);
+        const TetMesh& tets = s.mesh.tets;  // moved last: E_geo's rows read it until their get()
+        result.warnings.insert(result.warnings.begin(), s.mesh.warnings.begin(),
+                               s.mesh.warnings.end());
+        if (!result.cascade.reached_band)
+          result.warnings.push_back("the edge ratio " + std::to_string(result.cascade.edge_ratio) +
+                                    " did not reach the band within " +
+                                    std::to_string(options.cascade.num_cascades) + " cascades");
+        if (!result.cascade.bounded)
+          result.warnings.push_back("beta was below the boundedness bound in some cascade");
+        // Back where the input was: the solve fixes only shape, not translation.
+        result.tet_canonical = result.cascade.positions;
+        result.tet_canonical.rowwise() += tets.V.colwise().mean();
+        result.canonical.faces = surface.faces;
+        result.canonical.V = result.tet_canonical.topRows(tets.num_surface_vertices);
+        if (result.skeleton_canonical.rows() > 0)
+          result.skeleton_canonical.rowwise() += tets.V.colwise().mean();
 
-               const EdgeGraph& graph = s.edges.graph;
-               const Eigen::MatrixX3d& P = tets.V;
-               const Eigen::MatrixX3d& Q = result.tet_canonical;
-               UnfoldMetrics& m = result.metrics;
-               constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
-               m.E_rig = m.E_str = m.E_geo = m.E_geo_surface = kNotComputed;
-               m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
-               if (computes_metric(options, "E_rig")) {
-                 const RigidityError rig = rigidity_error(graph, P, Q);
-                 m.E_rig = rig.mean;
-                 m.rigidity_per_vertex = rig.per_vertex;
-               }
-               if (computes_metric(options, "E_str")) {
-                 const StretchError str = stretch_error(P, Q, options.stretch_metric);
-                 m.E_str = str.value;
-                 m.E_str_exact = str.exact;
-               }
-               m.E_geo_skipped = geodesic_skipped(options, int(P.rows()));
-               if (!m.E_geo_skipped.empty()) LOG(INFO) << m.E_geo_skipped;
-               if (computes_metric(options, "E_geo") && m.E_geo_skipped.empty()) {
-                 const GeodesicError geo =
-                     s.geodesic_rows.valid() ? geodesic_error_solve(s.geodesic_rows.get(), Q)
-                                             : geodesic_error(graph, P, Q, options.geodesic_metric);
-                 m.E_geo = geo.value;
-                 m.E_geo_exact = geo.exact;
-                 const std::optional<GeodesicRows>& rows = s.surface_geodesic_rows;
-                 m.E_geo_surface =
-                     !rows ? surface_geodesic_error(surface.V, triangulate_faces(surface),
-                                                    result.canonical.V, options.geodesic_metric)
-                                 .value
-                     : rows->sources.empty()
-                         ? kNotComputed
-                         : geodesic_error_solve(*rows, result.canonical.V).value;
-               }
-               // Against the orientation the tets were made with.
-               m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);
-               m.damage = surface_damage(surface.V, result.canonical.V, surface.faces);
-               m.folds = surface_folds(surface.V, result.canonical.V, triangulate_faces(surface));
-               result.surface = std::move(s.mesh.surface);
-               result.tets = std::move(s.mesh.tets);
-               result.tet_report = s.mesh.tet_report;
-             },
-             StagePart::metrics)
-      .joining();
+        const EdgeGraph& graph = s.edges.graph;
+        const Eigen::MatrixX3d& P = tets.V;
+        const Eigen::MatrixX3d& Q = result.tet_canonical;
+        UnfoldMetrics& m = result.metrics;
+        constexpr double kNotComputed = std::numeric_limits<double>::quiet_NaN();
+        m.E_rig = m.E_str = m.E_geo = m.E_geo_surface = kNotComputed;
+        m.rigidity_per_vertex = Eigen::VectorXd::Constant(P.rows(), kNotComputed);
+        if (computes_metric(options, "E_rig")) {
+          const RigidityError rig = rigidity_error(graph, P, Q);
+          m.E_rig = rig.mean;
+          m.rigidity_per_vertex = rig.per_vertex;
+        }
+        if (computes_metric(options, "E_str")) {
+          const StretchError str = stretch_error(P, Q, options.stretch_metric);
+          m.E_str = str.value;
+          m.E_str_exact = str.exact;
+        }
+        m.E_geo_skipped = geodesic_skipped(options, int(P.rows()));
+        if (!m.E_geo_skipped.empty()) LOG(INFO) << m.E_geo_skipped;
+        if (computes_metric(options, "E_geo") && m.E_geo_skipped.empty()) {
+          const GeodesicError geo = s.geodesic_rows.valid()
+                                        ? geodesic_error_solve(s.geodesic_rows.get(), Q)
+                                        : geodesic_error(graph, P, Q, options.geodesic_metric);
+          m.E_geo = geo.value;
+          m.E_geo_exact = geo.exact;
+          const std::optional<GeodesicRows>& rows = s.surface_geodesic_rows;
+          if (!rows)
+            m.E_geo_surface = surface_geodesic_error(surface.V, faces, result.canonical.V,
+                                                     options.geodesic_metric)
+                                  .value;
+          else if (!rows->sources.empty())  // else the surface's edges fall apart: NaN
+            m.E_geo_surface = geodesic_error_solve(*rows, result.canonical.V).value;
+        }
+        // Against the orientation the tets were made with.
+        m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);
+        m.damage = surface_damage(surface.V, result.canonical.V, surface.faces);
+        m.folds = surface_folds(surface.V, result.canonical.V, faces);
+        result.surface = std::move(s.mesh.surface);
+        result.tets = std::move(s.mesh.tets);
+        result.tet_report = s.mesh.tet_report;
+      },
+      StagePart::metrics);
 }
 
 bool surface_open(const UnfoldState& state) { return state.open; }
@@ -549,7 +546,8 @@ bool untangles(const Options& options) { return options.untangle.sweeps > 0; }
 StageList finish(const Options& options) {
   StageList stages;
   if (untangles(options)) stages.push_back(untangle());
-  stages.push_back(measure());
+  // Joining: the surface's geodesic rows may still run beside.
+  stages.push_back(measure().joining());
   return stages;
 }
 

@@ -31,13 +31,13 @@ Stage interior_placement();    ///< the input tets' interior by ARAP
 Stage lsmds_solve();           ///< method lsmds
 Stage scf_solve();             ///< method scf
 Stage anchor_unit();           ///< lambda_2 of the surface: the integration's anchor unit
+Stage integration();           ///< the rotation field integrated (one ARAP step)
+Stage anchored();              ///< the anchored ARAP steps after it
+Stage untangle();              ///< the canonical tets' inverted ones mended (untangle_tets)
+Stage measure();               ///< the canonical pose placed, the metrics
 /// E_geo_surface's rows of the rest surface, beside the solve on small meshes (the
 /// measure stage joins it)
 Stage surface_geodesic_rows();
-Stage integration();  ///< the rotation field integrated (one ARAP step)
-Stage anchored();     ///< the anchored ARAP steps after it
-Stage untangle();     ///< the canonical tets' inverted ones mended (untangle_tets)
-Stage measure();      ///< the canonical pose placed, the metrics
 /// Every method's last stages: untangle (untangle.sweeps > 0), then measure.
 StageList finish(const Options& options);
 
