@@ -130,6 +130,42 @@ TEST(FastWindingNumber, ClassifyDecidesLikeTheAccurateTreeAndRefinesNearOneHalf)
   EXPECT_GT(coarse, 400);  // the first pass really is the coarser one
 }
 
+// The coarse pass runs in float. A query a hair's breadth off a face, inside
+// or outside, is where float's rounding could take the face's solid angle to
+// its other side (w off by 1): classify must still decide as the exact sum
+// does, also far from the origin (the shape moved by 10^4 of its size).
+TEST(FastWindingNumber, ClassifyDecidesRightAHairsBreadthOffTheSurface) {
+  for (const double offset : {0.0, 1e4}) {
+    SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 24);
+    const double size = (shape.V.colwise().maxCoeff() - shape.V.colwise().minCoeff()).norm();
+    shape.V.array() += offset * size;
+    const Eigen::MatrixX3i F = triangulate_faces(shape);
+    const FastWindingNumberTree tree = fast_winding_number_precomputation(shape.V, F);
+    std::vector<Eigen::RowVector3d> queries;
+    for (Eigen::Index t = 0; t < F.rows(); t += 7) {
+      const Eigen::RowVector3d a = shape.V.row(F(t, 0)), b = shape.V.row(F(t, 1)),
+                               c = shape.V.row(F(t, 2));
+      const Eigen::RowVector3d normal = (b - a).cross(c - a).normalized();
+      const double edge = (b - a).norm();
+      // Inside the face (not at its centroid, which a Delaunay tet's may be near).
+      const Eigen::RowVector3d on = 0.5 * a + 0.3 * b + 0.2 * c;
+      for (const double h : {1e-9, 1e-7, 1e-5, 1e-3})
+        for (const double side : {-1.0, 1.0}) queries.push_back(on + side * h * edge * normal);
+    }
+    Eigen::MatrixX3d Q(Eigen::Index(queries.size()), 3);
+    for (size_t i = 0; i < queries.size(); ++i) Q.row(Eigen::Index(i)) = queries[i];
+    const Eigen::VectorXd exact = winding_number(shape.V, F, Q);
+    const Eigen::VectorXd w = fast_winding_number_classify(tree, Q);
+    int decided = 0;
+    for (Eigen::Index i = 0; i < Q.rows(); ++i) {
+      if (std::abs(exact(i) - 0.5) < 0.2) continue;  // a fold or a contact: no clear side
+      EXPECT_EQ(w(i) > 0.5, exact(i) > 0.5) << "query " << i << ", offset " << offset;
+      ++decided;
+    }
+    EXPECT_GT(decided, Q.rows() * 9 / 10);
+  }
+}
+
 TEST(RobustTetrahedralize, FillsASphereWithTheSurfaceVerticesFirst) {
   const SurfaceMesh sphere = test::uv_sphere(12, 24, 2.0);
   TetOptions options;

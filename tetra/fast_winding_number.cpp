@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "geometry/fast_atan2.h"
 
@@ -11,11 +12,12 @@ namespace unfold {
 namespace {
 
 // A triangle's corner relative to a query point q, and its distance from q.
+template <typename Real>
 struct Corner {
-  double x, y, z, length;
+  Real x, y, z, length;
 };
 
-Corner corner(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+Corner<double> corner(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
   const Eigen::Vector3d d = p - q;
   return {d.x(), d.y(), d.z(), d.norm()};
 }
@@ -24,11 +26,14 @@ Corner corner(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
 // behind the triangle's normal, is 2 atan2(numerator, denominator) of these
 // (Van Oosterom and Strackee 1983). Written on scalars: the packet walk below
 // takes it in lane loops GCC vectorizes.
+template <typename Real>
 struct HalfAngle {
-  double numerator, denominator;
+  Real numerator, denominator;
 };
 
-inline HalfAngle half_solid_angle(const Corner& a, const Corner& b, const Corner& c) {
+template <typename Real>
+inline HalfAngle<Real> half_solid_angle(const Corner<Real>& a, const Corner<Real>& b,
+                                        const Corner<Real>& c) {
   return {
       a.x * (b.y * c.z - b.z * c.y) + a.y * (b.z * c.x - b.x * c.z) + a.z * (b.x * c.y - b.y * c.x),
       a.length * b.length * c.length + (a.x * b.x + a.y * b.y + a.z * b.z) * c.length +
@@ -38,8 +43,8 @@ inline HalfAngle half_solid_angle(const Corner& a, const Corner& b, const Corner
 
 double triangle_solid_angle(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F, int t,
                             const Eigen::Vector3d& q) {
-  const HalfAngle h = half_solid_angle(corner(V.row(F(t, 0)), q), corner(V.row(F(t, 1)), q),
-                                       corner(V.row(F(t, 2)), q));
+  const HalfAngle<double> h = half_solid_angle(corner(V.row(F(t, 0)), q), corner(V.row(F(t, 1)), q),
+                                               corner(V.row(F(t, 2)), q));
   return 2 * std::atan2(h.numerator, h.denominator);
 }
 
@@ -151,12 +156,34 @@ FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d&
   tree.nodes.resize(1);
   tree.corners.resize(3 * size_t(F.rows()));
   build(tree, centroids, 0, 0, int(F.rows()));
+  tree.float_origin = 0.5 * (V.colwise().minCoeff() + V.colwise().maxCoeff()).transpose();
+  tree.float_nodes.reserve(tree.nodes.size());
+  for (const FastWindingNumberTree::Node& node : tree.nodes)
+    tree.float_nodes.push_back(
+        {{float(node.center.x() - tree.float_origin.x()),
+          float(node.center.y() - tree.float_origin.y()),
+          float(node.center.z() - tree.float_origin.z())},
+         {float(node.area_normal.x()), float(node.area_normal.y()), float(node.area_normal.z())},
+         float(node.radius),
+         node.left});
   return tree;
 }
 
 namespace {
 
-constexpr int kPacket = 8;  // queries traversing the tree together
+// Queries traversing the tree together: 8 in double, 16 in float (two AVX2
+// vectors: each node loaded serves twice the queries; the coarse walk is
+// bound by those loads).
+template <typename Real>
+constexpr int kPacket = std::is_same_v<Real, float> ? 16 : 8;
+
+// Float's rounding of a near triangle's numerator can put a query within about
+// 1e-6 of the triangle's size from its plane on the plane's other side, which
+// moves w by 1 (and near its edges, where the numerator and the denominator
+// both vanish, the angle is anything). A float walk flags a query that meets a
+// triangle whose |numerator| and denominator are below this times the corners'
+// length product; classify evaluates it again in double.
+constexpr float kFloatDoubtful = 1e-4f;
 
 // Winding numbers at q[0, count), count <= kPacket: clusters farther than
 // accuracy * radius by their dipole, the near leaves' triangles summed with
@@ -168,14 +195,29 @@ constexpr int kPacket = 8;  // queries traversing the tree together
 // the AVX2 clone, picked at load time where the CPU has it (david0's carve
 // 1.11 -> 0.77 s, docs/performance.md). Each query meets the nodes it meets
 // alone, in the same order, so its sum is the one-query walk's bit for bit.
+// Real is double (the accurate values) or float (classify's coarse pass: twice
+// the lanes per instruction). In float the corner offsets are taken in double
+// and then rounded, so that their error is relative to the offset, not to the
+// coordinates; doubtful[k] says whether query k met a triangle float cannot
+// vouch for (kFloatDoubtful; always false in double).
+template <typename Real>
 __attribute__((target_clones("avx2", "default"))) void winding_numbers_at(
     const FastWindingNumberTree& tree, const Eigen::Vector3d* q, int count, double accuracy,
-    double* w) {
-  alignas(64) double sum[kPacket] = {};
-  alignas(64) double qx[kPacket], qy[kPacket], qz[kPacket];  // lanes past count repeat the last
-  for (int k = 0; k < kPacket; ++k) {
+    double* w, bool* doubtful) {
+  constexpr int kLanes = kPacket<Real>;
+  alignas(64) Real sum[kLanes] = {};
+  alignas(64) Real flagged[kLanes] = {};
+  // Lanes past count repeat the last query.
+  alignas(64) double qx[kLanes], qy[kLanes], qz[kLanes];
+  alignas(64) Real rx[kLanes], ry[kLanes], rz[kLanes];
+  // The far field's query in the float nodes' frame (double's is the identity).
+  const Eigen::Vector3d origin =
+      std::is_same_v<Real, float> ? tree.float_origin : Eigen::Vector3d::Zero();
+  for (int k = 0; k < kLanes; ++k) {
     const Eigen::Vector3d& p = q[std::min(k, count - 1)];
     qx[k] = p.x(), qy[k] = p.y(), qz[k] = p.z();
+    rx[k] = Real(p.x() - origin.x()), ry[k] = Real(p.y() - origin.y()),
+    rz[k] = Real(p.z() - origin.z());
   }
   struct Entry {
     int node;
@@ -186,73 +228,102 @@ __attribute__((target_clones("avx2", "default"))) void winding_numbers_at(
   stack[size++] = {0, (1u << count) - 1};
   while (size > 0) {
     const Entry entry = stack[--size];
-    const FastWindingNumberTree::Node& node = tree.nodes[size_t(entry.node)];
-    const double cx = node.center.x(), cy = node.center.y(), cz = node.center.z();
-    const double nx = node.area_normal.x(), ny = node.area_normal.y(), nz = node.area_normal.z();
-    const double reach = accuracy * node.radius;
-    // Lane flags as doubles (1 or 0): SSE2 compares and selects those.
-    alignas(64) double active[kPacket], near[kPacket];
-    for (int k = 0; k < kPacket; ++k) active[k] = entry.active >> k & 1;
+    Real cx, cy, cz, nx, ny, nz, reach;
+    int left;
+    if constexpr (std::is_same_v<Real, float>) {
+      const FastWindingNumberTree::FloatNode& node = tree.float_nodes[size_t(entry.node)];
+      cx = node.center[0], cy = node.center[1], cz = node.center[2];
+      nx = node.area_normal[0], ny = node.area_normal[1], nz = node.area_normal[2];
+      reach = float(accuracy) * node.radius;
+      left = node.left;
+    } else {
+      const FastWindingNumberTree::Node& node = tree.nodes[size_t(entry.node)];
+      cx = node.center.x(), cy = node.center.y(), cz = node.center.z();
+      nx = node.area_normal.x(), ny = node.area_normal.y(), nz = node.area_normal.z();
+      reach = accuracy * node.radius;
+      left = node.left;
+    }
+    // Lane flags as Reals (1 or 0): SSE2 compares and selects those.
+    alignas(64) Real active[kLanes], near[kLanes];
+    for (int k = 0; k < kLanes; ++k) active[k] = Real(entry.active >> k & 1);
 #pragma GCC unroll 1  // unrolled first, it would not be vectorized
-    for (int k = 0; k < kPacket; ++k) {
+    for (int k = 0; k < kLanes; ++k) {
       // Far: the cluster acts as a dipole of moment area_normal at center.
-      const double dx = cx - qx[k], dy = cy - qy[k], dz = cz - qz[k];
-      const double distance = std::sqrt(dx * dx + dy * dy + dz * dz);
-      const double term = (nx * dx + ny * dy + nz * dz) / (distance * distance * distance);
+      const Real dx = cx - rx[k], dy = cy - ry[k], dz = cz - rz[k];
+      const Real distance = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const Real term = (nx * dx + ny * dy + nz * dz) / (distance * distance * distance);
       const bool far = distance > reach;
-      sum[k] += (active[k] > 0) & far ? term : 0.0;
-      near[k] = (active[k] > 0) & !far ? 1.0 : 0.0;
+      sum[k] += (active[k] > 0) & far ? term : Real(0);
+      near[k] = (active[k] > 0) & !far ? Real(1) : Real(0);
     }
     uint32_t open = 0;
-    for (int k = 0; k < kPacket; ++k) open |= uint32_t(near[k] > 0) << k;
+    for (int k = 0; k < kLanes; ++k) open |= uint32_t(near[k] > 0) << k;
     if (open == 0) continue;
-    if (node.left >= 0) {
-      stack[size++] = {node.left, open};
-      stack[size++] = {node.left + 1, open};
+    if (left >= 0) {
+      stack[size++] = {left, open};
+      stack[size++] = {left + 1, open};
       continue;
     }
+    const FastWindingNumberTree::Node& node = tree.nodes[size_t(entry.node)];
     // The leaf's corners' offsets and lengths once per query, then its
     // triangles' solid angles.
-    alignas(64) double ox[kMaxLeafPoints][kPacket], oy[kMaxLeafPoints][kPacket],
-        oz[kMaxLeafPoints][kPacket], length[kMaxLeafPoints][kPacket];
+    alignas(64) Real ox[kMaxLeafPoints][kLanes], oy[kMaxLeafPoints][kLanes],
+        oz[kMaxLeafPoints][kLanes], length[kMaxLeafPoints][kLanes];
     for (int p = 0; p < node.num_points; ++p) {
       const Eigen::Vector3d& point = tree.points[size_t(node.first_point + p)];
       const double px = point.x(), py = point.y(), pz = point.z();
-      for (int k = 0; k < kPacket; ++k) {
-        ox[p][k] = px - qx[k], oy[p][k] = py - qy[k], oz[p][k] = pz - qz[k];
+      for (int k = 0; k < kLanes; ++k) {
+        ox[p][k] = Real(px - qx[k]), oy[p][k] = Real(py - qy[k]), oz[p][k] = Real(pz - qz[k]);
         length[p][k] = std::sqrt(ox[p][k] * ox[p][k] + oy[p][k] * oy[p][k] + oz[p][k] * oz[p][k]);
       }
     }
     for (int t = node.first; t < node.first + node.count; ++t) {
       const unsigned char* c = &tree.corners[size_t(3 * t)];
-      for (int k = 0; k < kPacket; ++k) {
-        const HalfAngle h =
-            half_solid_angle({ox[c[0]][k], oy[c[0]][k], oz[c[0]][k], length[c[0]][k]},
-                             {ox[c[1]][k], oy[c[1]][k], oz[c[1]][k], length[c[1]][k]},
-                             {ox[c[2]][k], oy[c[2]][k], oz[c[2]][k], length[c[2]][k]});
-        const double angle = 2 * fast_atan2(h.numerator, h.denominator);
-        sum[k] += near[k] > 0 ? angle : 0.0;  // x + 0 is x
+      for (int k = 0; k < kLanes; ++k) {
+        const HalfAngle<Real> h =
+            half_solid_angle<Real>({ox[c[0]][k], oy[c[0]][k], oz[c[0]][k], length[c[0]][k]},
+                                   {ox[c[1]][k], oy[c[1]][k], oz[c[1]][k], length[c[1]][k]},
+                                   {ox[c[2]][k], oy[c[2]][k], oz[c[2]][k], length[c[2]][k]});
+        const Real angle = 2 * fast_atan2(h.numerator, h.denominator);
+        sum[k] += near[k] > 0 ? angle : Real(0);  // x + 0 is x
+        if constexpr (std::is_same_v<Real, float>) {
+          const float scale = kFloatDoubtful * length[c[0]][k] * length[c[1]][k] * length[c[2]][k];
+          flagged[k] += (near[k] > 0) & (std::abs(h.numerator) < scale) & (h.denominator < scale)
+                            ? 1.0f
+                            : 0.0f;
+        }
       }
     }
   }
-  for (int k = 0; k < count; ++k) w[k] = sum[k] / (4 * M_PI);
+  for (int k = 0; k < count; ++k) {
+    w[k] = double(sum[k]) / (4 * M_PI);
+    doubtful[k] = flagged[k] > 0;
+  }
 }
 
-// Fills w(i) for the rows i of Q listed in `rows`, kPacket consecutive rows at
-// a time (in a Z-order they are close, and take nearly the same walk).
+// Fills w(i) for the rows i of Q listed in `rows`, a packet of consecutive rows
+// at a time (in a Z-order they are close, and take nearly the same walk), by
+// Real's walk; (*doubtful)[i], if given, whether float's w(i) is in doubt.
+template <typename Real>
 void solve_rows(const FastWindingNumberTree& tree, const Eigen::MatrixX3d& Q,
-                const std::vector<int>& rows, double accuracy, Eigen::VectorXd* w) {
+                const std::vector<int>& rows, double accuracy, Eigen::VectorXd* w,
+                std::vector<char>* doubtful = nullptr) {
+  constexpr int kLanes = kPacket<Real>;
   if (tree.nodes.empty()) return;
-  const Eigen::Index packets = (Eigen::Index(rows.size()) + kPacket - 1) / kPacket;
+  const Eigen::Index packets = (Eigen::Index(rows.size()) + kLanes - 1) / kLanes;
 #pragma omp parallel for schedule(dynamic, 32)
   for (Eigen::Index p = 0; p < packets; ++p) {
-    const size_t first = size_t(p) * kPacket;
-    const int count = int(std::min(rows.size() - first, size_t(kPacket)));
-    Eigen::Vector3d q[kPacket];
-    double values[kPacket];
+    const size_t first = size_t(p) * kLanes;
+    const int count = int(std::min(rows.size() - first, size_t(kLanes)));
+    Eigen::Vector3d q[kLanes];
+    double values[kLanes];
+    bool flags[kLanes];
     for (int k = 0; k < count; ++k) q[k] = Q.row(rows[first + size_t(k)]);
-    winding_numbers_at(tree, q, count, accuracy, values);
-    for (int k = 0; k < count; ++k) (*w)(rows[first + size_t(k)]) = values[k];
+    winding_numbers_at<Real>(tree, q, count, accuracy, values, flags);
+    for (int k = 0; k < count; ++k) {
+      (*w)(rows[first + size_t(k)]) = values[k];
+      if (doubtful) (*doubtful)[size_t(rows[first + size_t(k)])] = flags[k];
+    }
   }
 }
 
@@ -261,7 +332,7 @@ void solve_rows(const FastWindingNumberTree& tree, const Eigen::MatrixX3d& Q,
 Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
                                           const Eigen::MatrixX3d& Q) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
-  solve_rows(tree, Q, spatial_order(Q), tree.accuracy, &w);
+  solve_rows<double>(tree, Q, spatial_order(Q), tree.accuracy, &w);
   return w;
 }
 
@@ -270,11 +341,13 @@ Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const ClassifyOptions& options) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(Q.rows());
   const std::vector<int> order = spatial_order(Q);
-  solve_rows(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w);
+  std::vector<char> doubtful(size_t(Q.rows()), 0);
+  solve_rows<float>(tree, Q, order, std::min(options.coarse_accuracy, tree.accuracy), &w,
+                    &doubtful);
   std::vector<int> uncertain;
   for (int i : order)
-    if (classify_refines(w(i), options)) uncertain.push_back(i);
-  solve_rows(tree, Q, uncertain, tree.accuracy, &w);
+    if (classify_refines(w(i), options) || doubtful[size_t(i)]) uncertain.push_back(i);
+  solve_rows<double>(tree, Q, uncertain, tree.accuracy, &w);
   return w;
 }
 

@@ -30,6 +30,18 @@ struct FastWindingNumberTree {
   Eigen::MatrixX3i F;
   std::vector<int> order;  ///< triangle indices, grouped by node
   std::vector<Node> nodes;
+  /// The nodes' far-field data in float, 32 bytes a node (a third of Node): the
+  /// coarse pass's walk is bound by loading nodes, so it reads these. Centers
+  /// are relative to float_origin (the box's center), so that float rounds them
+  /// to the shape's size, not to its distance from the origin.
+  struct FloatNode {
+    float center[3];
+    float area_normal[3];
+    float radius;
+    int left;
+  };
+  std::vector<FloatNode> float_nodes;
+  Eigen::Vector3d float_origin = Eigen::Vector3d::Zero();
   /// The leaves' distinct corner positions, leaf after leaf: a query near a
   /// leaf takes each corner's offset and length once, not once per triangle.
   std::vector<Eigen::Vector3d> points;

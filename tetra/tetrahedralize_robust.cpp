@@ -3,6 +3,7 @@
 // needs the surface to be a valid piecewise-linear complex, so
 // self-intersections, non-manifold edges and small holes do not stop it.
 #include <glog/logging.h>
+#include <omp.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -10,9 +11,11 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <parallel/algorithm>
 #include <vector>
 
 #include "core/errors.h"
+#include "core/parallel.h"
 #include "core/union_find.h"
 #include "mesh/edge_graph.h"
 #include "mesh/position_order.h"
@@ -190,17 +193,27 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
   };
   std::vector<char> keep(size_t(num_delaunay), 0);
   std::vector<char> degenerate(size_t(num_delaunay), 0);
-  std::vector<std::pair<uint64_t, int>> candidates;
-  for (int t = 0; t < num_delaunay; ++t) {
-    for (int e = 0; e < 6; ++e) {
-      const int a = T(t, corner(0, e)), b = T(t, corner(1, e));
-      if (V.row(a) == V.row(b)) degenerate[size_t(t)] = 1;
-      if (w(t) <= kInside || a >= n || b >= n || surface_edge(a, b)) continue;
-      candidates.emplace_back(edge_key(a, b), t);
+  // Each thread's candidates from its own block of tets, joined: the sort
+  // gives them one order whatever the blocks were.
+  std::vector<std::vector<std::pair<uint64_t, int>>> found(
+      static_cast<size_t>(omp_get_max_threads()));
+#pragma omp parallel if (num_delaunay >= kMinParallelRows)
+  {
+    std::vector<std::pair<uint64_t, int>>& mine = found[size_t(omp_get_thread_num())];
+#pragma omp for schedule(static)
+    for (int t = 0; t < num_delaunay; ++t) {
+      for (int e = 0; e < 6; ++e) {
+        const int a = T(t, corner(0, e)), b = T(t, corner(1, e));
+        if (V.row(a) == V.row(b)) degenerate[size_t(t)] = 1;
+        if (w(t) <= kInside || a >= n || b >= n || surface_edge(a, b)) continue;
+        mine.emplace_back(edge_key(a, b), t);
+      }
+      keep[size_t(t)] = w(t) > kInside && !degenerate[size_t(t)];
     }
-    keep[size_t(t)] = w(t) > kInside && !degenerate[size_t(t)];
   }
-  std::sort(candidates.begin(), candidates.end());
+  std::vector<std::pair<uint64_t, int>> candidates;
+  for (const auto& mine : found) candidates.insert(candidates.end(), mine.begin(), mine.end());
+  __gnu_parallel::sort(candidates.begin(), candidates.end());
   std::vector<size_t> group_start;  // first candidate of each distinct edge
   for (size_t k = 0; k < candidates.size(); ++k)
     if (k == 0 || candidates[k].first != candidates[k - 1].first) group_start.push_back(k);
