@@ -67,10 +67,11 @@ struct ClassifyOptions {
   double margin = 0.3;           ///< |w| within this of 1/2: evaluated again at the tree's accuracy
 };
 
-/// Winding numbers for telling inside (|w| > 1/2) from outside, in about two
-/// thirds of the time of fast_winding_number_solve: every query first with the
-/// coarser far field, then those whose |w| is within `margin` of 1/2 again at
-/// the tree's accuracy. Elsewhere the coarse value is kept: it differs from the
+/// Winding numbers for telling inside (|w| > 1/2) from outside, in about 0.4
+/// of the time of fast_winding_number_solve: every query first with the coarser
+/// far field, in float, then those whose |w| is within `margin` of 1/2, or whose
+/// float value is in doubt (a hair's breadth off a triangle), again at the
+/// tree's accuracy in double. Elsewhere the coarse value is kept: it differs from the
 /// tree-accuracy one by at most 0.205 over the 15.4 million queries the
 /// default's carves make on ../shared/data's 22 shapes and faust_remeshed
 /// (docs/performance.md), so it is on the same side of 1/2, and within
