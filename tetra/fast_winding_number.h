@@ -30,7 +30,7 @@ struct FastWindingNumberTree {
   Eigen::MatrixX3i F;
   std::vector<int> order;  ///< triangle indices, grouped by node
   std::vector<Node> nodes;
-  /// The nodes' far-field data in float, 32 bytes a node (a third of Node): the
+  /// The nodes' far-field data in float, 32 bytes a node (Node has 80): the
   /// coarse pass's walk is bound by loading nodes, so it reads these. Centers
   /// are relative to float_origin (the box's center), so that float rounds them
   /// to the shape's size, not to its distance from the origin.
