@@ -147,6 +147,13 @@ EdgeGraph connected_surface_graph(const Eigen::MatrixX3d& V, const Eigen::Matrix
   return graph;
 }
 
+// E_geo over a surface whose faces' edges fall apart: NaN.
+GeodesicError no_surface_error() {
+  GeodesicError none;
+  none.value = std::numeric_limits<double>::quiet_NaN();
+  return none;
+}
+
 }  // namespace
 
 GeodesicError surface_geodesic_error(const Eigen::MatrixX3d& V, const Eigen::MatrixXi& F,
@@ -155,11 +162,7 @@ GeodesicError surface_geodesic_error(const Eigen::MatrixX3d& V, const Eigen::Mat
   if (Q.rows() != V.rows())
     throw UsageError("surface_geodesic_error: need V and Q with one row per surface vertex");
   const EdgeGraph graph = connected_surface_graph(V, F);
-  if (graph.num_vertices == 0) {
-    GeodesicError none;
-    none.value = std::numeric_limits<double>::quiet_NaN();
-    return none;
-  }
+  if (graph.num_vertices == 0) return no_surface_error();
   return geodesic_error(graph, V, Q, options);
 }
 
@@ -169,6 +172,11 @@ GeodesicRows surface_geodesic_error_precomputation(const Eigen::MatrixX3d& V,
   const EdgeGraph graph = connected_surface_graph(V, F);
   if (graph.num_vertices == 0) return GeodesicRows{};
   return geodesic_error_precomputation(graph, V, options);
+}
+
+GeodesicError surface_geodesic_error_solve(const GeodesicRows& rows, const Eigen::MatrixX3d& Q) {
+  if (rows.sources.empty()) return no_surface_error();
+  return geodesic_error_solve(rows, Q);
 }
 
 }  // namespace unfold

@@ -68,12 +68,16 @@ GeodesicRows geodesic_error_precomputation(const EdgeGraph& graph, const Eigen::
 GeodesicError geodesic_error_solve(const GeodesicRows& rows, const Eigen::MatrixX3d& Q);
 
 /// surface_geodesic_error's rows of the rest surface (geodesic_error_precomputation on
-/// the faces' edge graph), for geodesic_error_solve with the deformed surface: the same
-/// value, bit for bit.
+/// the faces' edge graph), for surface_geodesic_error_solve with the deformed surface:
+/// the same value, bit for bit.
 /// @return no sources when the faces' edges do not join every vertex (E_geo over the
 ///         surface is then NaN)
 GeodesicRows surface_geodesic_error_precomputation(const Eigen::MatrixX3d& V,
                                                    const Eigen::MatrixXi& F,
                                                    const GeodesicErrorOptions& options = {});
+
+/// surface_geodesic_error from its rows: NaN where they have no sources.
+/// @throws as geodesic_error_solve (UsageError on a size mismatch)
+GeodesicError surface_geodesic_error_solve(const GeodesicRows& rows, const Eigen::MatrixX3d& Q);
 
 }  // namespace unfold

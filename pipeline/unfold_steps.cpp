@@ -521,12 +521,10 @@ Stage measure() {
           m.E_geo = geo.value;
           m.E_geo_exact = geo.exact;
           const std::optional<GeodesicRows>& rows = s.surface_geodesic_rows;
-          if (!rows)
-            m.E_geo_surface = surface_geodesic_error(surface.V, faces, result.canonical.V,
-                                                     options.geodesic_metric)
-                                  .value;
-          else if (!rows->sources.empty())  // else the surface's edges fall apart: NaN
-            m.E_geo_surface = geodesic_error_solve(*rows, result.canonical.V).value;
+          m.E_geo_surface = (rows ? surface_geodesic_error_solve(*rows, result.canonical.V)
+                                  : surface_geodesic_error(surface.V, faces, result.canonical.V,
+                                                           options.geodesic_metric))
+                                .value;
         }
         // Against the orientation the tets were made with.
         m.inverted_tets = count_inverted_tets(tets_made_at(s), Q, tets.T);

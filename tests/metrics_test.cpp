@@ -290,8 +290,9 @@ TEST(MetricGeodesic, OverASurfaceAlone) {
   EXPECT_NEAR(surface_geodesic_error(sphere.V, F, 2.5 * rigidly_moved(bent, rng)).value, value,
               1e-12);
   // Its rows made first (as beside a solve): the same value, bit for bit.
-  EXPECT_EQ(geodesic_error_solve(surface_geodesic_error_precomputation(sphere.V, F), bent).value,
-            value);
+  EXPECT_EQ(
+      surface_geodesic_error_solve(surface_geodesic_error_precomputation(sphere.V, F), bent).value,
+      value);
   // Two spheres side by side: their faces' edges join no vertex of one to the other.
   Eigen::MatrixX3d two(2 * sphere.V.rows(), 3);
   two << sphere.V, sphere.V.rowwise() + Eigen::RowVector3d(3, 0, 0);
@@ -299,6 +300,8 @@ TEST(MetricGeodesic, OverASurfaceAlone) {
   both << F, F.array() + int(sphere.V.rows());
   EXPECT_TRUE(std::isnan(surface_geodesic_error(two, both, two).value));
   EXPECT_TRUE(surface_geodesic_error_precomputation(two, both).sources.empty());
+  EXPECT_TRUE(std::isnan(
+      surface_geodesic_error_solve(surface_geodesic_error_precomputation(two, both), two).value));
   EXPECT_THROW(surface_geodesic_error(sphere.V, F, bent.topRows(3)), UsageError);
 }
 
