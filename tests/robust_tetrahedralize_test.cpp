@@ -18,6 +18,7 @@
 #include "test_meshes.h"
 #include "tetra/delaunay_tets.h"
 #include "tetra/fast_winding_number.h"
+#include "tetra/interior_grid_points.h"
 #include "tetra/run_tetgen.h"
 #include "tetra/tetrahedralize.h"
 

@@ -118,15 +118,4 @@ RobustStart robust_start(const SurfaceMesh& surface, double spacing = 0);
 TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& start,
                               TetReport* report = nullptr);
 
-/// The robust route's interior grid is a cubic lattice sheared by this much:
-/// lattice point (x, y, z) (in cells, in input order x, then y, then z) moves
-/// by kInteriorGridShear * (y + z, x + z, x + y) cells. A cubic cell's 8
-/// corners are cospherical, which a Delaunay resolves by exact arithmetic and
-/// symbolic perturbation (a third of TetGen's Delaunay time on the TOSCA/FAUST
-/// meshes), each library its own way; a sheared cell has one Delaunay split,
-/// and with this sign it is the one TetGen's perturbation picked for whole
-/// cells (the robust route's Delaunay until it moved to CGAL): 6 tets around
-/// the (1, 1, 1) diagonal (docs/tetrahedralization.md).
-inline constexpr double kInteriorGridShear = -5e-7;
-
 }  // namespace unfold

@@ -21,6 +21,7 @@
 #include "mesh/position_order.h"
 #include "tetra/delaunay_tets.h"
 #include "tetra/fast_winding_number.h"
+#include "tetra/interior_grid_points.h"
 #include "tetra/tetrahedralize.h"
 
 namespace unfold {
@@ -50,74 +51,6 @@ Eigen::MatrixX3d separate_duplicates(const Eigen::MatrixX3d& V, double offset) {
     P.row(order[k]) += offset * Eigen::RowVector3d(r * std::cos(phi), r * std::sin(phi), z);
   }
   return P;
-}
-
-// Grid points inside the surface, at least `spacing / 2` from every surface
-// vertex (both tested before the lattice is sheared by kInteriorGridShear: the
-// shear moves no point across either test).
-Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindingNumberTree& tree,
-                                      double orientation, double spacing) {
-  const Eigen::RowVector3d low = V.colwise().minCoeff(), high = V.colwise().maxCoeff();
-  const Eigen::Array3i cells = ((high - low) / spacing).array().ceil().cast<int>().max(1);
-  // Surface vertices sorted into the grid's cells (one cell of margin all
-  // round), for the distance test: a cell's vertices are
-  // vertex_of[first[c], first[c + 1]).
-  const auto cell_of = [&](const Eigen::RowVector3d& p) {
-    return Eigen::Array3i(((p - low) / spacing).array().floor().cast<int>());
-  };
-  const auto key = [&](const Eigen::Array3i& c) {
-    return (int64_t(c(0) + 1) * (cells(1) + 3) + (c(1) + 1)) * (cells(2) + 3) + (c(2) + 1);
-  };
-  const int64_t num_keys = int64_t(cells(0) + 3) * (cells(1) + 3) * (cells(2) + 3);
-  std::vector<int> first(size_t(num_keys) + 1, 0), vertex_of(size_t(V.rows()));
-  std::vector<int64_t> vertex_key(size_t(V.rows()));
-  for (int i = 0; i < int(V.rows()); ++i) {
-    vertex_key[size_t(i)] = key(cell_of(V.row(i)));
-    ++first[size_t(vertex_key[size_t(i)]) + 1];
-  }
-  std::partial_sum(first.begin(), first.end(), first.begin());
-  {
-    std::vector<int> next(first.begin(), first.end() - 1);
-    for (int i = 0; i < int(V.rows()); ++i)
-      vertex_of[size_t(next[size_t(vertex_key[size_t(i)])]++)] = i;
-  }
-  // Each x slab on its own (in parallel), joined in x order: the order of the
-  // points is the serial loop's.
-  std::vector<std::vector<Eigen::RowVector3d>> slab_points(size_t(cells(0))),
-      slab_shifts(size_t(cells(0)));
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int x = 0; x < cells(0); ++x)
-    for (int y = 0; y < cells(1); ++y)
-      for (int z = 0; z < cells(2); ++z) {
-        const Eigen::RowVector3d p = low + spacing * Eigen::RowVector3d(x + 0.5, y + 0.5, z + 0.5);
-        const Eigen::Array3i c = cell_of(p);
-        bool far = true;
-        for (int dx = -1; dx <= 1 && far; ++dx)
-          for (int dy = -1; dy <= 1 && far; ++dy)
-            for (int dz = -1; dz <= 1 && far; ++dz) {
-              const int64_t k = key(c + Eigen::Array3i(dx, dy, dz));
-              for (int j = first[size_t(k)]; j < first[size_t(k) + 1] && far; ++j)
-                far = !((V.row(vertex_of[size_t(j)]) - p).norm() < spacing / 2);
-            }
-        if (far) {
-          slab_points[size_t(x)].push_back(p);
-          slab_shifts[size_t(x)].push_back(kInteriorGridShear * spacing *
-                                           Eigen::RowVector3d(y + z, x + z, x + y));
-        }
-      }
-  std::vector<Eigen::RowVector3d> candidates, shifts;
-  for (int x = 0; x < cells(0); ++x) {
-    candidates.insert(candidates.end(), slab_points[size_t(x)].begin(),
-                      slab_points[size_t(x)].end());
-    shifts.insert(shifts.end(), slab_shifts[size_t(x)].begin(), slab_shifts[size_t(x)].end());
-  }
-  Eigen::MatrixX3d Q(candidates.size(), 3);
-  for (size_t k = 0; k < candidates.size(); ++k) Q.row(Eigen::Index(k)) = candidates[k];
-  const Eigen::VectorXd w = orientation * fast_winding_number_classify(tree, Q);
-  Eigen::MatrixX3d inside((w.array() > kInside).count(), 3);
-  for (Eigen::Index k = 0, row = 0; k < Q.rows(); ++k)
-    if (w(k) > kInside) inside.row(row++) = Q.row(k) + shifts[size_t(k)];
-  return inside;
 }
 
 // Seconds since `start`, and start moved to now: the phases' times for --v=1.
