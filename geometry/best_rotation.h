@@ -23,4 +23,14 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov);
 /// @param guess a rotation
 Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d& guess);
 
+/// Cells a call of best_rotations_from_guesses takes at most.
+inline constexpr int kRotationPacket = 8;
+
+/// *rotation[k] = best_rotation(*cov[k], *rotation[k]) for k < count, the
+/// same values bit for bit, a packet of cells at once (vectorized: the local
+/// steps' loops call it a packet at a time).
+/// @param count at most kRotationPacket
+void best_rotations_from_guesses(const Eigen::Matrix3d* const* cov,
+                                 Eigen::Matrix3d* const* rotation, int count);
+
 }  // namespace unfold

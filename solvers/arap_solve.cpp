@@ -207,15 +207,28 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   const auto fit = [&](const Eigen::MatrixX3d& X) {
     x_rows = X;
 #pragma omp parallel for schedule(static) if (num_active >= kMinParallelRows)
-    for (int a = 0; a < num_active; ++a) {
-      const int i = active[size_t(a)];
-      if (graph.degree(i) == 0) continue;
-      // sum_j e_ij (x_i - x_j)^T
-      Eigen::Matrix3d s = rest.weighted_laplacian_rest.row(i).transpose() * x_rows.row(i);
-      for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
-        s.noalias() -=
-            rest.weighted_edges.row(k).transpose() * x_rows.row(graph.neighbors[size_t(k)]);
-      R[size_t(i)] = warm ? best_rotation(s, R[size_t(i)]) : best_rotation(s);
+    for (int first = 0; first < num_active; first += kRotationPacket) {
+      Eigen::Matrix3d s[kRotationPacket];
+      const Eigen::Matrix3d* cov[kRotationPacket];
+      Eigen::Matrix3d* rotation[kRotationPacket];
+      int count = 0;
+      for (int a = first; a < std::min(num_active, first + kRotationPacket); ++a) {
+        const int i = active[size_t(a)];
+        if (graph.degree(i) == 0) continue;
+        // sum_j e_ij (x_i - x_j)^T
+        Eigen::Matrix3d& c = s[count];
+        c = rest.weighted_laplacian_rest.row(i).transpose() * x_rows.row(i);
+        for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+          c.noalias() -=
+              rest.weighted_edges.row(k).transpose() * x_rows.row(graph.neighbors[size_t(k)]);
+        if (!warm) {
+          R[size_t(i)] = best_rotation(c);
+          continue;
+        }
+        cov[count] = &c;
+        rotation[count++] = &R[size_t(i)];
+      }
+      best_rotations_from_guesses(cov, rotation, count);
     }
     warm = true;
     double energy = 0;

@@ -1,5 +1,7 @@
 #include "solvers/unfold_problem.h"
 
+#include <algorithm>
+
 #include "core/parallel.h"
 #include "energies/rotation_term.h"
 #include "geometry/best_rotation.h"
@@ -43,12 +45,22 @@ void fit_rotations(const UnfoldProblem& problem, const Eigen::MatrixX3d& Q, doub
   const bool warm = R->size() == size_t(n);
   R->resize(size_t(n));
 #pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
-  for (int i = 0; i < n; ++i) {
-    Eigen::Matrix3d& r = (*R)[size_t(i)];
-    if (!any || S[size_t(i)].isZero(0))
-      r.setIdentity();
-    else
-      r = warm ? best_rotation(S[size_t(i)], r) : best_rotation(S[size_t(i)]);
+  for (int first = 0; first < n; first += kRotationPacket) {
+    const Eigen::Matrix3d* cov[kRotationPacket];
+    Eigen::Matrix3d* rotation[kRotationPacket];
+    int count = 0;
+    for (int i = first; i < std::min(n, first + kRotationPacket); ++i) {
+      Eigen::Matrix3d& r = (*R)[size_t(i)];
+      if (!any || S[size_t(i)].isZero(0)) {
+        r.setIdentity();
+      } else if (!warm) {
+        r = best_rotation(S[size_t(i)]);
+      } else {
+        cov[count] = &S[size_t(i)];
+        rotation[count++] = &r;
+      }
+    }
+    best_rotations_from_guesses(cov, rotation, count);
   }
 }
 

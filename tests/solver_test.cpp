@@ -95,6 +95,40 @@ TEST(SolverRotation, FlatAndReflectedCellsFromAGuessOrAtAnotherCriticalPoint) {
   }
 }
 
+// A packet mixes cells Newton settles, far guesses and critical points that
+// fall back to the cold fit, and flat cells: each lane's rotation is the one
+// of that cell refined alone, bit for bit, whatever the other lanes hold.
+TEST(SolverRotation, APacketsCellsAreEachRefinedAsAlone) {
+  std::vector<Eigen::Matrix3d> cov, guess, expected, alone;
+  for (unsigned seed = 1; seed <= 3 * kRotationPacket; ++seed) {
+    const Eigen::Matrix3d R0 = test::random_rotation(seed);
+    const Eigen::Matrix3d Q = test::random_rotation(seed + 50);
+    const double weakest = seed % 3 == 0 ? 0.0 : 0.5;
+    cov.push_back(Q * Eigen::Vector3d(3, 1, weakest).asDiagonal() * Q.transpose() * R0.transpose());
+    const double angle = std::vector<double>{1e-4, 0.05, 3.0, 0.4}[seed % 4];
+    guess.push_back(
+        R0 * Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, -1).normalized()).toRotationMatrix());
+    expected.push_back(R0);
+    alone.push_back(best_rotation(cov.back(), guess.back()));
+  }
+  for (int count = 1; count <= kRotationPacket; ++count)
+    for (size_t first = 0; first + size_t(count) <= cov.size(); first += size_t(count)) {
+      std::vector<Eigen::Matrix3d> R(guess.begin() + long(first),
+                                     guess.begin() + long(first) + count);
+      std::vector<const Eigen::Matrix3d*> c;
+      std::vector<Eigen::Matrix3d*> r;
+      for (int k = 0; k < count; ++k) {
+        c.push_back(&cov[first + size_t(k)]);
+        r.push_back(&R[size_t(k)]);
+      }
+      best_rotations_from_guesses(c.data(), r.data(), count);
+      for (int k = 0; k < count; ++k) {
+        EXPECT_EQ(R[size_t(k)], alone[first + size_t(k)]) << "cell " << first + size_t(k);
+        EXPECT_LT((R[size_t(k)] - expected[first + size_t(k)]).norm(), 1e-11);
+      }
+    }
+}
+
 TEST(SolverFiedler, MatchesDenseEigenvalues) {
   const TetMesh mesh = test::grid_tet_mesh(5, 3, 2);
   const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
