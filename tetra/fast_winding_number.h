@@ -62,6 +62,9 @@ FastWindingNumberTree fast_winding_number_precomputation(const Eigen::MatrixX3d&
 Eigen::VectorXd fast_winding_number_solve(const FastWindingNumberTree& tree,
                                           const Eigen::MatrixX3d& Q);
 
+/// The winding number above which a point is inside (what classify decides).
+inline constexpr double kInsideWinding = 0.5;
+
 struct ClassifyOptions {
   double coarse_accuracy = 1.5;  ///< far-field ratio of the first pass (cheaper than the tree's)
   double margin = 0.3;           ///< |w| within this of 1/2: evaluated again at the tree's accuracy
@@ -84,7 +87,7 @@ Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
 /// tree's accuracy (|w| within `margin` of 1/2): its values in that band are
 /// the accurate ones, the others within `margin` of them.
 inline bool classify_refines(double w, const ClassifyOptions& options = {}) {
-  return std::abs(std::abs(w) - 0.5) < options.margin;
+  return std::abs(std::abs(w) - kInsideWinding) < options.margin;
 }
 
 /// Exact winding numbers at the rows of Q (sum over every triangle), for checks.

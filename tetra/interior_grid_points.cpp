@@ -13,8 +13,6 @@
 namespace unfold {
 namespace {
 
-constexpr double kInsideWinding = 0.5;  // winding number above which a point is inside
-
 // The lattice's cells along x whose winding number can be above 1/2, for
 // each line along x (index y * cells(2) + z): [first, last], empty where
 // first > last. The winding number w_S of the surface S is 1/4 or less
@@ -106,8 +104,9 @@ LineRanges line_ranges(const FastWindingNumberTree& tree, const Eigen::RowVector
 
 }  // namespace
 
-Eigen::MatrixX3d interior_grid_points(const Eigen::MatrixX3d& V, const FastWindingNumberTree& tree,
-                                      double orientation, double spacing) {
+Eigen::MatrixX3d interior_grid_points(const FastWindingNumberTree& tree, double orientation,
+                                      double spacing) {
+  const Eigen::MatrixX3d& V = tree.V;
   const Eigen::RowVector3d low = V.colwise().minCoeff(), high = V.colwise().maxCoeff();
   const Eigen::Array3i cells = ((high - low) / spacing).array().ceil().cast<int>().max(1);
   const LineRanges ranges = line_ranges(tree, low, spacing, cells);

@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <parallel/algorithm>
 #include <vector>
 
@@ -26,8 +25,6 @@
 
 namespace unfold {
 namespace {
-
-constexpr double kInside = 0.5;  // winding number above which a point is inside
 
 uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);
@@ -79,7 +76,7 @@ RobustStart robust_start(const SurfaceMesh& surface, double spacing) {
     volume += surface.V.row(F(t, 0)).dot(surface.V.row(F(t, 1)).cross(surface.V.row(F(t, 2))));
   start.orientation = volume < 0 ? -1 : 1;
   start.interior =
-      interior_grid_points(surface.V, start.tree, start.orientation,
+      interior_grid_points(start.tree, start.orientation,
                            spacing > 0 ? spacing : kInteriorSpacingEdges * start.mean_edge_length);
   start.seconds = lap(&clock);
   return start;
@@ -138,10 +135,10 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
       for (int e = 0; e < 6; ++e) {
         const int a = T(t, corner(0, e)), b = T(t, corner(1, e));
         if (V.row(a) == V.row(b)) degenerate[size_t(t)] = 1;
-        if (w(t) <= kInside || a >= n || b >= n || surface_edge(a, b)) continue;
+        if (w(t) <= kInsideWinding || a >= n || b >= n || surface_edge(a, b)) continue;
         mine.emplace_back(edge_key(a, b), t);
       }
-      keep[size_t(t)] = w(t) > kInside && !degenerate[size_t(t)];
+      keep[size_t(t)] = w(t) > kInsideWinding && !degenerate[size_t(t)];
     }
   }
   std::vector<std::pair<uint64_t, int>> candidates;
@@ -158,7 +155,7 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
   const Eigen::VectorXd w_mid = orientation * fast_winding_number_classify(tree, midpoints);
   group_start.push_back(candidates.size());
   for (size_t g = 0; g + 1 < group_start.size(); ++g)
-    if (w_mid(Eigen::Index(g)) <= kInside)
+    if (w_mid(Eigen::Index(g)) <= kInsideWinding)
       for (size_t k = group_start[g]; k < group_start[g + 1]; ++k)
         keep[size_t(candidates[k].second)] = 0;
 
