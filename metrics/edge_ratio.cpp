@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "core/chunked_row_sum.h"
 #include "core/errors.h"
 
 namespace unfold {
@@ -47,10 +48,12 @@ double edge_ratio(const EdgeGraph& graph, const Eigen::VectorXd& rest_lengths,
   if (rest_lengths.size() != graph.num_edges() || Q.rows() != graph.num_vertices)
     throw UsageError("edge_ratio: need one rest length per edge and one row of Q per vertex");
   if (graph.num_edges() == 0) throw InputError("edge_ratio: the graph has no edges");
-  double sum = 0;
-  for (int e = 0; e < graph.num_edges(); ++e)
-    sum += (Q.row(graph.edges(e, 0)) - Q.row(graph.edges(e, 1))).norm() / rest_lengths[e];
-  return sum / graph.num_edges();
+  // Once per solver iteration: on all threads.
+  const auto sum = chunked_row_sum(graph.num_edges(), [&](int e) {
+    return Eigen::Array<double, 1, 1>((Q.row(graph.edges(e, 0)) - Q.row(graph.edges(e, 1))).norm() /
+                                      rest_lengths[e]);
+  });
+  return sum(0) / graph.num_edges();
 }
 
 Eigen::VectorXd vertex_edge_ratio(const EdgeGraph& graph, const Eigen::MatrixX3d& P,

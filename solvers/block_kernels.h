@@ -6,9 +6,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <algorithm>
-#include <type_traits>
 
+#include "core/chunked_row_sum.h"
 #include "core/parallel.h"
 #include "geometry/row_major.h"
 
@@ -55,27 +54,6 @@ void multiply(const CsrViewOf<Scalar>& A, const RowMatrixX3<Scalar>& X, RowMatri
 template <typename Scalar>
 void residual(const CsrViewOf<Scalar>& A, const RowMatrixX3<Scalar>& B,
               const RowMatrixX3<Scalar>& X, RowMatrixX3<Scalar>* R);
-
-/// Sum over rows i of row_sum(i) (a fixed-size Eigen array), in parallel. The rows
-/// are cut into 64 chunks fixed by n alone and the partial sums added in chunk
-/// order, so the result does not depend on the number of threads. row_sum may
-/// also update row i of other blocks (each row is visited once): that is how
-/// the solvers fuse an update with the reduction that follows it.
-template <typename RowSum, typename Sum = std::invoke_result_t<RowSum, int>>
-Sum chunked_row_sum(int n, const RowSum& row_sum) {
-  constexpr int kChunks = 64;
-  Sum partial[kChunks];
-  const int size = (n + kChunks - 1) / kChunks;
-#pragma omp parallel for schedule(static) if (n >= kMinParallelRows)
-  for (int c = 0; c < kChunks; ++c) {
-    Sum s = Sum::Zero();
-    for (int i = c * size; i < std::min(n, (c + 1) * size); ++i) s += row_sum(i);
-    partial[c] = s;
-  }
-  Sum total = Sum::Zero();
-  for (const auto& s : partial) total += s;
-  return total;
-}
 
 /// Per column k: sum_i X(i, k) Y(i, k).
 Eigen::Array3d column_dots(const RowMatrixX3d& X, const RowMatrixX3d& Y);
