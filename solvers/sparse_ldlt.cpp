@@ -48,6 +48,9 @@ struct SparseLdlt::Impl {
   cholmod_common common;
   cholmod_sparse* A = nullptr;
   cholmod_factor* L = nullptr;
+  // kCholmodCholesky: the supernodal analysis, kept because each
+  // factorization's factor is turned simplicial for the solves.
+  cholmod_factor* supernodal = nullptr;
   // The solves' workspaces: [0] for x and y, [1] for z when the columns are
   // solved on two threads (each with its own cholmod_common, which CHOLMOD
   // writes to), else [0] for all three.
@@ -70,6 +73,7 @@ struct SparseLdlt::Impl {
       cholmod_finish(&w.common);
     }
     cholmod_free_factor(&L, &common);
+    cholmod_free_factor(&supernodal, &common);
     cholmod_free_sparse(&A, &common);
     cholmod_finish(&common);
   }
@@ -123,6 +127,7 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
     return;
   }
   cholmod_free_factor(&m.L, &m.common);
+  cholmod_free_factor(&m.supernodal, &m.common);
   cholmod_free_sparse(&m.A, &m.common);
   m.A = lower_triangle(A, CHOLMOD_REAL, &m.common);
   if (!m.A) throw NumericalError("SparseLdlt: CHOLMOD could not allocate the matrix");
@@ -133,6 +138,10 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
                          std::to_string(m.common.status) + ")");
   factor_nonzeros_ = m.common.lnz;
   factor_flops_ = m.common.fl;
+  if (backend_ == Backend::kCholmodCholesky) {
+    m.supernodal = cholmod_copy_factor(m.L, &m.common);
+    if (!m.supernodal) throw NumericalError("SparseLdlt: CHOLMOD could not copy the analysis");
+  }
 }
 
 void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
@@ -152,10 +161,21 @@ void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
   }
   m.copy_lower_values(A);
   if (backend_ == Backend::kCholmodCholesky) {
+    if (!m.L->is_super) {  // the last factorization's, turned simplicial
+      cholmod_free_factor(&m.L, &m.common);
+      m.L = cholmod_copy_factor(m.supernodal, &m.common);
+      if (!m.L) throw NumericalError("SparseLdlt: CHOLMOD could not copy the analysis");
+    }
     // A pivot that is not positive stops LL^T there: L->minor < n.
     if (!cholmod_factorize(m.A, m.L, &m.common) || m.L->minor < m.L->n)
       throw NumericalError("SparseLdlt: not positive definite (CHOLMOD LL^T stopped at column " +
                            std::to_string(m.L->minor) + ")");
+    // Solves by the simplicial sweeps: through ATLAS a supernodal solve of two
+    // columns took twice as long (david11's anchored steps, docs/performance.md).
+    if (!cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0, /*to_packed=*/1,
+                               /*to_monotonic=*/1, m.L, &m.common))
+      throw NumericalError("SparseLdlt: CHOLMOD could not convert the factor (status " +
+                           std::to_string(m.common.status) + ")");
     return;
   }
   // CHOLMOD's LDL^T does not stop at negative pivots; a zero one sets L->minor < n.

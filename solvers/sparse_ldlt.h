@@ -19,7 +19,8 @@ class SparseLdlt {
     kCholmod,  ///< CHOLMOD simplicial LDL^T, its own ordering choice (AMD, METIS if better)
     /// CHOLMOD supernodal LL^T (dense blocks through BLAS): positive definite
     /// matrices only, several times faster to factorize where the fill is large
-    /// (ARAP with held or anchored vertices, docs/history/performance.md)
+    /// (ARAP with held or anchored vertices, docs/history/performance.md); each
+    /// factor is then turned simplicial, whose solves are the faster
     kCholmodCholesky,
   };
 

@@ -84,5 +84,25 @@ TEST(SparseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   EXPECT_THROW(llt.factorize(A), NumericalError);
 }
 
+// Each factor is turned simplicial for the solves and the next factorization
+// starts again from the supernodal analysis: factorizations after a good one
+// and after a refused one are each the solution of their own matrix.
+TEST(SparseCholesky, FactorizesAgainAfterAGoodAndARefusedFactorization) {
+  const Eigen::SparseMatrix<double> A = shifted_laplacian(1e-2), B = shifted_laplacian(2.0),
+                                    bad = shifted_laplacian(-0.5);
+  Eigen::MatrixX3d b = Eigen::MatrixX3d::Random(A.rows(), 3), x;
+  SparseLdlt llt(SparseLdlt::Backend::kCholmodCholesky);
+  llt.analyze(A);
+  for (const Eigen::SparseMatrix<double>* M : {&A, &B, &bad, &A}) {
+    if (M == &bad) {
+      EXPECT_THROW(llt.factorize(*M), NumericalError);
+      continue;
+    }
+    llt.factorize(*M);
+    llt.solve(b, &x);
+    EXPECT_LT((*M * x - b).norm(), 1e-9 * b.norm());
+  }
+}
+
 }  // namespace
 }  // namespace unfold
