@@ -13,11 +13,12 @@ namespace {
 // swept on all threads in segments of this many entries. Every entry is
 // computed as on one thread, so the step is the same bit for bit.
 constexpr Eigen::Index kSegment = 4096;
+constexpr Eigen::Index kMinParallelEntries = 3 * Eigen::Index(kMinParallelRows);
 
 template <typename Sweep>
 void for_segments(Eigen::Index n, const Sweep& sweep) {
   const Eigen::Index segments = (n + kSegment - 1) / kSegment;
-#pragma omp parallel for schedule(static) if (n >= 3 * Eigen::Index(kMinParallelRows))
+#pragma omp parallel for schedule(static) if (n >= kMinParallelEntries)
   for (Eigen::Index k = 0; k < segments; ++k)
     sweep(k * kSegment, std::min(kSegment, n - k * kSegment));
 }
@@ -56,7 +57,7 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& x,
   // The Gram matrix's new row and dF^T f: each dot product whole on one
   // thread (in Eigen's order), the two sets side by side.
   Eigen::VectorXd dF_f(count_);
-#pragma omp parallel sections num_threads(2) if (n >= 3 * Eigen::Index(kMinParallelRows))
+#pragma omp parallel sections num_threads(2) if (n >= kMinParallelEntries)
   {
 #pragma omp section
     if (differences)
