@@ -82,8 +82,8 @@
     "soften.scale: the relative energy change that ends the second solve (its fine scale is "      \
     "filtered out anyway); 0: cascade.epsilon")                                                    \
   X(untangle_sweeps, "untangle.sweeps", untangle.sweeps,                                           \
-    "after the solve: passes that push the canonical tet mesh's inverted tets back out by "       \
-    "moving their corners a little (mesh/untangle_tets.h, docs/method.md, detail); 0: off")       \
+    "after the solve: passes that push the canonical tet mesh's inverted tets back out by "        \
+    "moving their corners a little (mesh/untangle_tets.h, docs/method.md, detail); 0: off")        \
   X(untangle_max_move, "untangle.max_move", untangle.max_move,                                     \
     "untangle.sweeps: how far a vertex may move, times the shortest tet edge at it at rest")       \
   X(beta_mode, "beta.mode", beta_mode,                                                             \
@@ -131,6 +131,12 @@
     "stretch.local: the regions' Gaussian width, times the geodesic diameter")                     \
   X(stretch_local_regions, "stretch.local_regions", energy.stretch_local_regions,                  \
     "stretch.local: how many regions (farthest-point landmarks)")                                  \
+  X(stretch_distance, "stretch.distance", energy.stretch_distance,                                 \
+    "weight >= 0 of a spread by distances between clusters (-sum M_a M_b |c_a - c_b|), relative "  \
+    "to the squared spread's pull at the rest shape's radius: near parts push apart more, limbs "  \
+    "splay (docs/method.md, spread by distances); 0: off")                                         \
+  X(stretch_distance_clusters, "stretch.distance_clusters", energy.stretch_distance_clusters,      \
+    "stretch.distance: how many clusters (graph-Voronoi cells of farthest-point seeds)")           \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")     \
   X(arap_weights, "arap.weights", energy.arap_weights,                                             \
     "ARAP edge weights w_ij: uniform (paper) or cotangent")                                        \

@@ -359,6 +359,9 @@ void validate_options(const Options& o) {
   require(std::isfinite(e.stretch_local_radius) && e.stretch_local_radius > 0,
           "stretch.local_radius", "must be a finite number > 0");
   require(e.stretch_local_regions >= 1, "stretch.local_regions", "must be at least 1");
+  require(std::isfinite(e.stretch_distance) && e.stretch_distance >= 0, "stretch.distance",
+          "must be a finite number >= 0");
+  require(e.stretch_distance_clusters >= 2, "stretch.distance_clusters", "must be at least 2");
   require(e.arap_weights == "uniform" || e.arap_weights == "cotangent", "arap.weights",
           "must be uniform or cotangent, got '" + e.arap_weights + "'");
   // The surface domain's energy lives on the triangles' edges: no tets to take

@@ -14,7 +14,9 @@
 //    R, so e_t = tr(Q^T H Q) - 2 tr(Q^T B(R)) + c(R): the local-global solver's
 //    global step;
 //  - RotationTerm (energies/rotation_term.h): depends on per-vertex rotations R
-//    and gives the local step its cell covariances.
+//    and gives the local step its cell covariances;
+//  - ConcaveTerm (energies/concave_term.h): concave in Q, so its tangent plane
+//    majorizes it: the local-global solver's global step takes that tangent.
 // Which backend runs which terms is decided from these alone
 // (solvers/backend_support.h).
 #pragma once
@@ -52,10 +54,11 @@ class EnergyTerm {
                                ResidualSum* sum) const = 0;
 
   /// scale * e_t(Q; R); when grad is not null, adds scale * de_t/dQ (at fixed R)
-  /// into it. From add_residuals.
+  /// into it. From add_residuals; a term that is no sum of squares (the spread
+  /// by distances, energies/distance_spread_energy.h) overrides it.
   /// @pre grad is n x 3 when given
-  double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
-                  Eigen::MatrixX3d* grad) const;
+  virtual double evaluate(const Eigen::MatrixX3d& Q, const Rotations& R, double scale,
+                          Eigen::MatrixX3d* grad) const;
 
   /// Adds scale * the Hessian of the term's quadratic growth far from the rest
   /// shape (acting alike on x, y, z): what bounds the concave stretch term,

@@ -3,6 +3,8 @@
 #include "core/errors.h"
 #include "energies/arap_energy.h"
 #include "energies/cotangent_weights.h"
+#include "energies/distance_clusters.h"
+#include "energies/distance_spread_energy.h"
 #include "energies/edge_length_energy.h"
 #include "energies/read_user_pairs.h"
 #include "energies/stretch_energy.h"
@@ -39,13 +41,23 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const E
                               const EnergyOptions& options, const Eigen::VectorXd& masses,
                               const std::vector<double>& arap_factors) {
   EnergyTerms terms;
+  const Eigen::VectorXd spread_masses = stretch_masses(tets, options, masses);
   terms.push_back(std::make_unique<StretchEnergy>(
-      graph, options.stretch_weight, stretch_masses(tets, options, masses),
+      graph, options.stretch_weight, spread_masses,
       options.stretch_local > 0
           ? spread_regions(tets.V, *graph,
                            {options.stretch_local, options.stretch_local_radius,
                             options.stretch_local_regions})
           : SpreadRegions{}));
+  if (options.stretch_distance > 0) {
+    int clusters = 0;
+    std::vector<int> cluster_of =
+        distance_clusters(tets.V, *graph, options.stretch_distance_clusters, &clusters);
+    terms.push_back(std::make_unique<DistanceSpreadEnergy>(
+        std::move(cluster_of), clusters, spread_masses,
+        options.stretch_weight *
+            distance_spread_weight(tets.V, spread_masses, options.stretch_distance)));
+  }
   std::vector<double> weights;
   if (options.arap_weights == "uniform")
     weights.assign(size_t(graph->num_edges()), 1.0);

@@ -19,12 +19,14 @@ struct EnergyOptions {
   double stretch_local = 0.0;              ///< share of the spread within regions, in [0, 1)
   double stretch_local_radius = 0.3;       ///< the regions' width, times the geodesic diameter
   int stretch_local_regions = 32;          ///< how many regions
-  double arap_weight = 1.0;                ///< ARAP weight relative to beta (paper: 1)
-  std::string arap_weights = "uniform";    ///< w_ij: uniform (paper) or cotangent
-  std::string user_pairs_file;             ///< pair constraints (Eq. 11); empty: none
-  double user_pairs_gamma = 1.0;           ///< gamma relative to beta (paper: gamma = beta)
-  double volume_weight = 0.0;              ///< tet volume term relative to beta; 0: off
-  double edge_length_weight = 0.0;         ///< edge-length springs relative to beta; 0: off
+  double stretch_distance = 0.0;  ///< spread by distances, relative to the squared one; 0: off
+  int stretch_distance_clusters = 512;   ///< its clusters (graph-Voronoi cells of the rest shape)
+  double arap_weight = 1.0;              ///< ARAP weight relative to beta (paper: 1)
+  std::string arap_weights = "uniform";  ///< w_ij: uniform (paper) or cotangent
+  std::string user_pairs_file;           ///< pair constraints (Eq. 11); empty: none
+  double user_pairs_gamma = 1.0;         ///< gamma relative to beta (paper: gamma = beta)
+  double volume_weight = 0.0;            ///< tet volume term relative to beta; 0: off
+  double edge_length_weight = 0.0;       ///< edge-length springs relative to beta; 0: off
 };
 
 using EnergyTerms = std::vector<std::unique_ptr<EnergyTerm>>;

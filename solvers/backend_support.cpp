@@ -1,14 +1,17 @@
 #include "solvers/backend_support.h"
 
+#include "energies/concave_term.h"
 #include "energies/quadratic_term.h"
 
 namespace unfold {
 
 std::string why_backend_cannot_run(const std::string& method, const EnergyTerm& term) {
-  if (method == "local_global" && !dynamic_cast<const QuadraticTerm*>(&term))
+  // A concave term joins the global step by its tangent (energies/concave_term.h).
+  if (method == "local_global" && !dynamic_cast<const QuadraticTerm*>(&term) &&
+      !dynamic_cast<const ConcaveTerm*>(&term))
     return "the " + term.name() +
-           " term is not quadratic: the local_global method cannot minimise it (use method: "
-           "ceres or dpmu)";
+           " term is neither quadratic nor concave: the local_global method cannot minimise it "
+           "(use method: ceres or dpmu)";
   return "";
 }
 

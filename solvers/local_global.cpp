@@ -10,6 +10,7 @@
 
 #include "core/errors.h"
 #include "core/progress.h"
+#include "energies/concave_term.h"
 #include "energies/quadratic_term.h"
 #include "energies/rotation_term.h"
 #include "metrics/edge_ratio.h"
@@ -52,9 +53,12 @@ void local_global_precomputation(const UnfoldProblem& problem, LocalGlobalData* 
   data->rhs.resize(problem.num_vertices(), 3);
   data->beta = 0;
   data->rotation_terms.clear();
-  for (const auto& term : problem.terms)
+  data->concave_terms.clear();
+  for (const auto& term : problem.terms) {
     if (dynamic_cast<const RotationTerm*>(term.get()))
       data->rotation_terms.push_back(static_cast<const QuadraticTerm*>(term.get()));
+    if (dynamic_cast<const ConcaveTerm*>(term.get())) data->concave_terms.push_back(term.get());
+  }
   data->iterative = use_iterative_solver(options, data->A);
   if (!data->iterative) {
     data->ldlt.analyze(data->A);
@@ -98,6 +102,13 @@ void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX
   data.rhs = data.B_free;
   for (const QuadraticTerm* term : data.rotation_terms)
     term->add_linear(R, term->weight(data.beta), &data.rhs);
+  if (!data.concave_terms.empty()) {
+    data.tangent.setZero(Q->rows(), 3);
+    for (const EnergyTerm* term : data.concave_terms)
+      dynamic_cast<const ConcaveTerm&>(*term).add_tangent(*Q, term->weight(data.beta),
+                                                          &data.tangent);
+    data.rhs += data.tangent;
+  }
   if (data.iterative) {
     data.rhs_rows = data.rhs;
     data.x_rows = *Q;
@@ -128,6 +139,14 @@ double energy_after_global_step(const LocalGlobalData& data, const Rotations& R,
     const RowMatrixX3d& r = data.cg_workspace.r;
     for (Eigen::Index i = 0; i < Q.rows(); ++i) energy -= Q.row(i).dot(r.row(i));
   }
+  // The concave terms' tangent is in rhs but not in A: with A Q = B + T - r the
+  // quadratic part is -tr(Q^T rhs) + 2 tr(Q^T T) - tr(Q^T r) + c; the terms' own
+  // values at Q then replace their tangent.
+  if (!data.concave_terms.empty()) {
+    energy += 2 * (Q.array() * data.tangent.array()).sum();
+    for (const EnergyTerm* term : data.concave_terms)
+      energy += term->evaluate(Q, R, term->weight(data.beta), nullptr);
+  }
   return energy;
 }
 
@@ -152,6 +171,8 @@ double energy_from_covariances(const LocalGlobalData& data, const Eigen::MatrixX
     energy += (data.part.U_fixed.transpose() * (Q.rowwise() - mean)).squaredNorm();
   for (const QuadraticTerm* term : data.rotation_terms)
     energy += term->weight(data.beta) * term->constant(R);
+  for (const EnergyTerm* term : data.concave_terms)
+    energy += term->evaluate(Q, R, term->weight(data.beta), nullptr);
   return energy;
 }
 

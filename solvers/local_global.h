@@ -66,6 +66,7 @@ struct LocalGlobalData {
   Eigen::MatrixX3d B_free;        ///< B_fixed + beta B_beta: the terms free of R
   double c_free = 0;              ///< c_fixed + beta c_beta
   std::vector<const QuadraticTerm*> rotation_terms;  ///< the terms whose B and c depend on R
+  std::vector<const EnergyTerm*> concave_terms;      ///< taken by their tangent at the iterate
   bool iterative = false;                            ///< CG with `amg`, else `ldlt`
   int negative_pivots = 0;  ///< direct: inertia of A (+ U_regions U_regions^T), 1 iff bounded
   SparseLdlt ldlt;          ///< direct: analyzed once, factorized per beta
@@ -74,6 +75,7 @@ struct LocalGlobalData {
   CgOptions cg;                           ///< iterative: tolerance and iteration limit
   mutable CgStats cg_stats;               ///< iterative: what the global steps did
   mutable Eigen::MatrixX3d rhs;           ///< global_step's right-hand side buffer, reused
+  mutable Eigen::MatrixX3d tangent;       ///< the concave terms' part of rhs (empty: none)
   mutable RowMatrixX3d rhs_rows, x_rows;  ///< iterative: the same in CG's layout
   mutable CgWorkspace cg_workspace;       ///< iterative: CG's vectors, reused
 };
@@ -102,8 +104,8 @@ inline bool energy_bounded(const LocalGlobalData& data) {
 }
 
 /// Global step: the zero-mean minimiser over Q for fixed rotations R (iterative:
-/// to cg_tolerance, from *Q). No allocation once Q has n rows; uses data's
-/// buffers, so one `data` must not serve two global steps at the same time.
+/// to cg_tolerance, from *Q), the concave terms taken by their tangent at *Q. No allocation once Q
+/// has n rows; uses data's buffers, so one `data` must not serve two global steps at the same time.
 void global_step(const LocalGlobalData& data, const Rotations& R, Eigen::MatrixX3d* Q);
 
 /// E(Q; R) at data.beta right after global_step(data, R, Q), from the quadratic

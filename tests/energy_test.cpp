@@ -13,6 +13,8 @@
 #include "core/errors.h"
 #include "energies/arap_energy.h"
 #include "energies/cotangent_weights.h"
+#include "energies/distance_clusters.h"
+#include "energies/distance_spread_energy.h"
 #include "energies/edge_length_energy.h"
 #include "energies/residual_sum.h"
 #include "energies/stretch_energy.h"
@@ -88,6 +90,12 @@ std::vector<TermCase> all_cases() {
                    }});
   cases.push_back({"edge_length", [](const EnergySetup& s) {
                      return std::make_unique<EdgeLengthEnergy>(s.graph, s.mesh.V, 1.0);
+                   }});
+  cases.push_back({"stretch_distance", [](const EnergySetup& s) {
+                     int cells = 0;
+                     std::vector<int> cell = distance_clusters(s.mesh.V, *s.graph, 5, &cells);
+                     return std::make_unique<DistanceSpreadEnergy>(
+                         std::move(cell), cells, lumped_masses(s.mesh.V, s.mesh.T), 1.0);
                    }});
   return cases;
 }

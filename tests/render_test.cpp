@@ -176,7 +176,7 @@ std::vector<std::string> lines(const std::string& path) {
   return result;
 }
 
-int run_unfold(const std::string& args) {
+int unfold_exit_code(const std::string& args) {
   const int status =
       std::system((std::string(UNFOLD_BIN_DIR) + "/unfold " + args + " >/dev/null 2>&1").c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -204,10 +204,10 @@ TEST(RenderCli, DemoBeforeAfterAndConvergence) {
   test::TempDir dir;
   const std::string picture = dir.file("demo.png"), csv = dir.file("c.csv"),
                     plot = dir.file("c.png"), vtu = dir.file("t.vtu");
-  ASSERT_EQ(
-      run_unfold("--demo_pose 1 --render " + picture + " --render_color rigidity" +
-                 " --convergence " + csv + " --convergence_png " + plot + " --tet_output " + vtu),
-      0);
+  ASSERT_EQ(unfold_exit_code("--demo_pose 1 --render " + picture + " --render_color rigidity" +
+                             " --convergence " + csv + " --convergence_png " + plot +
+                             " --tet_output " + vtu),
+            0);
   const Png png = read_png(picture);
   const RenderOptions defaults;
   ASSERT_EQ(png.width, 2 * defaults.panel_width);
@@ -252,8 +252,8 @@ TEST(RenderCli, DemoBeforeAfterAndConvergence) {
 TEST(RenderCli, FocusOnTheWorstRegionOfTheDemo) {
   test::TempDir dir;
   const std::string picture = dir.file("worst.png");
-  ASSERT_EQ(run_unfold("--demo_pose 1 --render " + picture +
-                       " --render_focus worst --render_color damage"),
+  ASSERT_EQ(unfold_exit_code("--demo_pose 1 --render " + picture +
+                             " --render_focus worst --render_color damage"),
             0);
   const Png png = read_png(picture);
   const int tile = 360;
@@ -263,13 +263,13 @@ TEST(RenderCli, FocusOnTheWorstRegionOfTheDemo) {
     EXPECT_FALSE(png.white(col * tile + tile / 2, kCaptionHeight + tile / 2)) << col;
   // With folds, 'worst' is the most folded vertex: again a region at each centre.
   const std::string folds = dir.file("folds.png");
-  ASSERT_EQ(
-      run_unfold("--demo_pose 1 --render " + folds + " --render_focus worst --render_color folds"),
-      0);
+  ASSERT_EQ(unfold_exit_code("--demo_pose 1 --render " + folds +
+                             " --render_focus worst --render_color folds"),
+            0);
   const Png fold_png = read_png(folds);
   for (int col = 0; col < 2; ++col)
     EXPECT_FALSE(fold_png.white(col * tile + tile / 2, kCaptionHeight + tile / 2)) << col;
-  EXPECT_EQ(run_unfold("--render " + folds + " --render_color fold"), 2);  // not a colouring
+  EXPECT_EQ(unfold_exit_code("--render " + folds + " --render_color fold"), 2);  // not a colouring
 }
 
 TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {
@@ -278,15 +278,15 @@ TEST(RenderCli, BetaSweepRendersOneColumnPerBeta) {
   SurfaceMesh ellipsoid = test::uv_sphere(10, 16);  // small: the sweep runs the solve 3 times
   ellipsoid.V.col(0) *= 3;
   write_surface_mesh(input, ellipsoid);
-  ASSERT_EQ(run_unfold("--input " + input + " --beta_sweep 1,4 --render " + picture), 0);
+  ASSERT_EQ(unfold_exit_code("--input " + input + " --beta_sweep 1,4 --render " + picture), 0);
   const Png png = read_png(picture);
   EXPECT_EQ(png.width, 3 * RenderOptions().panel_width);
-  EXPECT_EQ(run_unfold("--beta_sweep 1,x --render " + picture), 2);
-  EXPECT_EQ(run_unfold("--beta_sweep 1,2"), 2);  // no --render
-  EXPECT_EQ(run_unfold("--render " + dir.file("x.jpg")), 5);
+  EXPECT_EQ(unfold_exit_code("--beta_sweep 1,x --render " + picture), 2);
+  EXPECT_EQ(unfold_exit_code("--beta_sweep 1,2"), 2);  // no --render
+  EXPECT_EQ(unfold_exit_code("--render " + dir.file("x.jpg")), 5);
   // The skeleton is method scf's, drawn in the before/after picture only.
-  EXPECT_EQ(run_unfold("--render_skeleton --render " + picture), 2);
-  EXPECT_EQ(run_unfold("--method scf --render_skeleton"), 2);
+  EXPECT_EQ(unfold_exit_code("--render_skeleton --render " + picture), 2);
+  EXPECT_EQ(unfold_exit_code("--method scf --render_skeleton"), 2);
 }
 
 TEST(PlotConvergence, DrawsBothSeries) {
