@@ -133,8 +133,8 @@
     "stretch.local: how many regions (farthest-point landmarks)")                                  \
   X(stretch_distance, "stretch.distance", energy.stretch_distance,                                 \
     "weight >= 0 of a spread by distances between clusters (-sum M_a M_b |c_a - c_b|), relative "  \
-    "to the squared spread's pull at the rest shape's radius: near parts push apart more, limbs "  \
-    "splay (docs/method.md, spread by distances); 0: off")                                         \
+    "to the paper's squared spread's pull at the rest shape's radius: near parts push apart as "   \
+    "much as far ones, limbs splay (docs/method.md, spread by distances); 0: off")                 \
   X(stretch_distance_clusters, "stretch.distance_clusters", energy.stretch_distance_clusters,      \
     "stretch.distance: how many clusters (graph-Voronoi cells of farthest-point seeds)")           \
   X(arap_weight, "arap.weight", energy.arap_weight, "ARAP weight relative to beta (paper: 1)")     \

@@ -187,6 +187,11 @@ Options::Options() {
   integrate.pose_pull = 0.1;
   untangle.sweeps = 30;
   energy.stretch_masses = "lumped";
+  // Most of the spread by distances between clusters, the squared one kept for
+  // its bound (docs/method.md, spread by distances).
+  energy.stretch_weight = 0.03;
+  energy.stretch_distance = 16;
+  energy.stretch_mass_power = 0.7;
 }
 
 Options paper_options() { return Options(Options::PapersParameters{}); }

@@ -56,11 +56,13 @@ class DistanceSpreadEnergy : public EnergyTerm, public ConcaveTerm {
   Eigen::VectorXd cluster_mass_;  ///< M_a
 };
 
-/// kappa for stretch.distance = share: share times the squared spread's pull
-/// on a vertex at the rest shape's radius, 4 M r (its gradient 4 M m_i (q_i -
-/// c)), over the most the distance spread's can be, M: kappa = 4 share r, r the
-/// masses' root-mean-square distance from their centroid. Relative to the
-/// shape's size, so every meshing and scale of a shape gets the same balance.
+/// kappa for stretch.distance = share: share times the paper's squared spread's
+/// pull (stretch.weight 1) on a vertex at the rest shape's radius, 4 M r (its
+/// gradient 4 M m_i (q_i - c)), over the most the distance spread's can be, M:
+/// kappa = 4 share r, r the masses' root-mean-square distance from their
+/// centroid. Relative to the shape's size, so every meshing and scale of a
+/// shape gets the same balance; apart from stretch.weight, which sets the
+/// squared spread alone.
 /// @param masses empty: every vertex 1
 double distance_spread_weight(const Eigen::MatrixX3d& V, const Eigen::VectorXd& masses,
                               double share);

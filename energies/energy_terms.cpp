@@ -55,8 +55,7 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const E
         distance_clusters(tets.V, *graph, options.stretch_distance_clusters, &clusters);
     terms.push_back(std::make_unique<DistanceSpreadEnergy>(
         std::move(cluster_of), clusters, spread_masses,
-        options.stretch_weight *
-            distance_spread_weight(tets.V, spread_masses, options.stretch_distance)));
+        distance_spread_weight(tets.V, spread_masses, options.stretch_distance)));
   }
   std::vector<double> weights;
   if (options.arap_weights == "uniform")

@@ -19,7 +19,8 @@ struct EnergyOptions {
   double stretch_local = 0.0;              ///< share of the spread within regions, in [0, 1)
   double stretch_local_radius = 0.3;       ///< the regions' width, times the geodesic diameter
   int stretch_local_regions = 32;          ///< how many regions
-  double stretch_distance = 0.0;  ///< spread by distances, relative to the squared one; 0: off
+  double stretch_distance =
+      0.0;  ///< spread by distances (times the paper's squared one's pull); 0: off
   int stretch_distance_clusters = 512;   ///< its clusters (graph-Voronoi cells of the rest shape)
   double arap_weight = 1.0;              ///< ARAP weight relative to beta (paper: 1)
   std::string arap_weights = "uniform";  ///< w_ij: uniform (paper) or cotangent

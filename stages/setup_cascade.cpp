@@ -81,12 +81,14 @@ CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Su
     setup.lambda2 = fiedler_value(L, masses);
   }
   setup.beta = starting_beta(options.beta_mode, options.beta_value, options.raise_beta_to_bound, n,
-                             setup.lambda2);
+                             setup.lambda2, options.energy.stretch_weight);
   const double bound = n / setup.lambda2;
   if (setup.beta.raised) {
-    setup.warnings.push_back("beta " + std::to_string(setup.beta.requested) +
-                             " is below the bound n/lambda_2 - 1 = " + std::to_string(bound - 1) +
-                             ": raised to " + std::to_string(setup.beta.start));
+    setup.warnings.push_back(
+        "beta " + std::to_string(setup.beta.requested) +
+        " is below the bound stretch.weight (n/lambda_2 - 1) = " +
+        std::to_string(beta_bound(n, setup.lambda2, options.energy.stretch_weight)) +
+        ": raised to " + std::to_string(setup.beta.start));
     LOG(WARNING) << setup.warnings.back();
   }
   LOG(INFO) << "n = " << n << ", edges = " << graph.num_edges() << ", lambda_2 = " << setup.lambda2

@@ -161,9 +161,9 @@ TEST(AppHelp, WarningsAndErrorsAreOneLineNamingTheTool) {
   test::TempDir dir;
   const std::string input = dir.file("sphere.off");
   write_surface_mesh(input, test::uv_sphere(8, 12));
-  // A starting beta below the bound is raised, with a warning.
+  // A starting beta below the bound (stretch.weight (n/lambda_2 - 1)) is raised, with a warning.
   const AppRun warned =
-      run_app("unfold", "--input " + input + " --beta 0.1 --output " + dir.file("warned.off"));
+      run_app("unfold", "--input " + input + " --beta 0.01 --output " + dir.file("warned.off"));
   ASSERT_EQ(warned.exit_code, 0) << warned.err;
   const std::vector<std::string> warned_lines = lines(warned.err);
   EXPECT_TRUE(std::any_of(warned_lines.begin(), warned_lines.end(), [](const std::string& line) {

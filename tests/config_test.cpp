@@ -35,20 +35,31 @@ TEST(Config, ShippedDefaultEqualsBuiltInDefaults) {
   EXPECT_NE(options_to_yaml(shipped).find("edge_ratio_band: [0.95, 1.05]"), std::string::npos);
 }
 
-// configs/fast.yaml is the default with the coarse surface solve and the pose pull.
+// configs/fast.yaml is the default with the squared spread (as it was until
+// 2026-12-04), the coarse surface solve and the pose pull.
 TEST(Config, FastIsTheDefaultWithACoarseSolveAndAPosePull) {
   const Options fast = load_options(UNFOLD_SOURCE_DIR "/configs/fast.yaml");
   Options expected;
+  expected.energy.stretch_weight = 1;
+  expected.energy.stretch_distance = 0;
+  expected.energy.stretch_mass_power = 1;
   expected.surface_solve_hops = 1;
   expected.integrate.anchor = 40;
   expected.integrate.pose_pull = 0.2;
   EXPECT_EQ(options_to_yaml(fast), options_to_yaml(expected));
 }
 
-// configs/splayed.yaml is the default with the local spread and a mass power.
+// configs/splayed.yaml is the default with the squared spread (as it was until
+// 2026-12-04), the local spread and a mass power; configs/squared_spread.yaml
+// the default with the squared spread alone.
 TEST(Config, SplayedIsTheDefaultWithALocalSpread) {
-  const Options splayed = load_options(UNFOLD_SOURCE_DIR "/configs/splayed.yaml");
+  const Options squared = load_options(UNFOLD_SOURCE_DIR "/configs/squared_spread.yaml");
   Options expected;
+  expected.energy.stretch_weight = 1;
+  expected.energy.stretch_distance = 0;
+  expected.energy.stretch_mass_power = 1;
+  EXPECT_EQ(options_to_yaml(squared), options_to_yaml(expected));
+  const Options splayed = load_options(UNFOLD_SOURCE_DIR "/configs/splayed.yaml");
   expected.energy.stretch_mass_power = 0.35;
   expected.energy.stretch_local = 0.8;
   expected.energy.stretch_local_radius = 0.3;

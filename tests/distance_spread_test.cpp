@@ -196,15 +196,16 @@ TEST(DistanceSpread, PlainIterationsLowerTheEnergy) {
   EXPECT_LT(result.history.back().energy, result.history.front().energy);
 }
 
-// The default lines the animal's legs up along its body; with most of the
-// spread by distances (configs/distance_spread.yaml) they splay, so the
-// canonical form's distances follow the surface's: lower E_geo.
+// The squared spread lines the animal's legs up along its body
+// (configs/squared_spread.yaml); with most of the spread by distances (the
+// default) they splay, so the canonical form's distances follow the surface's:
+// lower E_geo.
 TEST(DistanceSpread, SplaysTheLimbsOfTheDemoAnimal) {
   const SurfaceMesh animal = make_articulated_shape(ShapePose::preset(1), 40);
   double E_geo[2];
   for (const bool distance : {false, true}) {
     Options options = load_options(UNFOLD_SOURCE_DIR "/configs/" +
-                                   std::string(distance ? "distance_spread" : "default") + ".yaml");
+                                   std::string(distance ? "default" : "squared_spread") + ".yaml");
     options.metrics = {"E_geo"};
     E_geo[distance] = unfold_surface(animal, options).metrics.E_geo;
   }

@@ -180,7 +180,8 @@ TEST(LocalSpread, BothSolversReachTheGlobalStepsMinimiser) {
   test::expect_energy_from_covariances_is_the_total(f, beta);
 }
 
-// The default lines the animal's legs up along its body, far from each other
+// The squared spread (configs/squared_spread.yaml, the default until
+// 2026-12-04) lines the animal's legs up along its body, far from each other
 // along the surface but near in space; configs/splayed.yaml spreads them out,
 // so the canonical form's distances follow the surface's (lower E_geo) and its
 // cells stay nearer their rest shape (lower E_rig).
@@ -189,7 +190,7 @@ TEST(LocalSpread, SplaysTheLimbsOfTheDemoAnimal) {
   double E_geo[2], E_rig[2];
   for (const bool splayed : {false, true}) {
     Options options = load_options(UNFOLD_SOURCE_DIR "/configs/" +
-                                   std::string(splayed ? "splayed" : "default") + ".yaml");
+                                   std::string(splayed ? "splayed" : "squared_spread") + ".yaml");
     options.metrics = {"E_rig", "E_geo"};
     const UnfoldResult r = unfold_surface(animal, options);
     E_geo[splayed] = r.metrics.E_geo;

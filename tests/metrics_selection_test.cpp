@@ -18,6 +18,7 @@
 #include "pipeline/metrics_json.h"
 #include "pipeline/unfold_surface.h"
 #include "run_app.h"
+#include "stages/solve_edge_graph.h"
 #include "test_files.h"
 #include "test_meshes.h"
 
@@ -63,11 +64,13 @@ TEST(MetricsSelection, OnlyTheAskedMetricsAreComputedAndTheyEqualAFullRun) {
   ASSERT_TRUE(std::isfinite(all.metrics.E_rig) && std::isfinite(all.metrics.E_str) &&
               std::isfinite(all.metrics.E_geo));
   // A mesh this small has E_geo's rows computed during the solve: the value is
-  // the one-pass function's.
+  // the one-pass function's, on the solve's edges (the tets' and the surface's
+  // edges that no tet has).
   ASSERT_LT(all.tets.V.rows(), kMinParallelRows);
   EXPECT_EQ(all.metrics.E_geo,
-            geodesic_error(build_edge_graph(int(all.tets.V.rows()), Eigen::MatrixXi(all.tets.T)),
-                           all.tets.V, all.tet_canonical, defaults.geodesic_metric)
+            geodesic_error(
+                solve_edge_graph(all.tets, all.surface, defaults.integrate.surface_edges).graph,
+                all.tets.V, all.tet_canonical, defaults.geodesic_metric)
                 .value);
   // Computed with it: the same over the surface's own edges and vertices alone.
   EXPECT_EQ(all.metrics.E_geo_surface,

@@ -198,16 +198,27 @@ TEST(Components, SimplifiedComponentsFollowOneAnother) {
   EXPECT_EQ(r.tets.V.topRows(r.surface.V.rows()), r.surface.V);
 }
 
+// The bound is k (n / lambda_2 - 1) with k the squared spread's weight: the
+// paper's k = 1 and the default's small k alike.
 TEST(BetaGuard, BetaBelowTheBoundIsRaisedAndReported) {
-  Options options = quick_options();
-  options.beta_value = 0.5;  // half of n / lambda_2: below the bound
   const SurfaceMesh sphere = test::uv_sphere(8, 12);
+  for (const double k : {0.03, 1.0}) {
+    Options options = quick_options();
+    options.energy.stretch_weight = k;
+    options.energy.stretch_distance = 0;  // the bound is the squared spread's
+    options.beta_value = 0.5 * k;         // half of k n / lambda_2: below the bound
+    const UnfoldResult r = unfold_surface(sphere, options);
+    EXPECT_TRUE(r.beta_raised) << k;
+    const double scale = r.beta_requested / (0.5 * k);  // n / lambda_2
+    EXPECT_NEAR(r.beta_start, k * (1.01 * scale - 1), 1e-9 * scale) << k;
+    EXPECT_TRUE(r.cascade.bounded) << k;
+    EXPECT_TRUE(has_warning(r, "raised to")) << k;
+  }
+  Options options = quick_options();
+  options.energy.stretch_weight = 1;
+  options.energy.stretch_distance = 0;
+  options.beta_value = 0.5;
   const UnfoldResult r = unfold_surface(sphere, options);
-  EXPECT_TRUE(r.beta_raised);
-  const double bound = r.beta_requested / 0.5;  // n / lambda_2
-  EXPECT_NEAR(r.beta_start, 1.01 * bound - 1, 1e-9 * bound);
-  EXPECT_TRUE(r.cascade.bounded);
-  EXPECT_TRUE(has_warning(r, "raised to"));
 
   const std::string json = metrics_json_text(r, options);
   EXPECT_TRUE(Contains(json, "\"beta_raised\": true"));
