@@ -12,7 +12,6 @@
 #include "core/errors.h"
 #include "energies/distance_clusters.h"
 #include "energies/distance_spread_energy.h"
-#include "mesh/best_rotations.h"
 #include "mesh/lumped_masses.h"
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
@@ -152,18 +151,12 @@ TEST(DistanceSpread, GlobalStepMinimisesTheTangentMajorizer) {
   const EnergyTerm& term = *f.problem.terms[1];
   ASSERT_EQ(term.name(), "stretch_distance");
   const double beta = 1.25 * f.n / f.lambda2;
-  Eigen::MatrixX3d bent = f.mesh.V;
-  for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.1 * bent(i, 0) * bent(i, 0);
-  bent.rowwise() -= bent.colwise().mean();
   Rotations R;
-  best_rotations(*f.graph, f.mesh.V, bent, &R);
+  Eigen::MatrixX3d bent = test::bent_pose(f, &R);
+  bent.rowwise() -= bent.colwise().mean();
   for (const char* method : {"direct", "iterative"}) {
-    LinearSolverOptions solver{method};
-    solver.cg_tolerance = 1e-12;
-    solver.cg_forcing = 0;
     LocalGlobalData data;
-    local_global_precomputation(f.problem, &data, solver);
-    local_global_set_beta(beta, &data);
+    test::exact_global_steps(f, method, beta, &data);
     Eigen::MatrixX3d Q = bent;
     global_step(data, R, &Q);
     Eigen::MatrixX3d grad, term_at_start = Eigen::MatrixX3d::Zero(f.n, 3),

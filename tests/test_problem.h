@@ -63,24 +63,37 @@ inline void expect_energy_from_covariances_is_the_total(const ProblemFixture& f,
   }
 }
 
+/// f's mesh bent in its (x, y) plane, y += 0.1 x^2, and the rotations that fit it.
+inline Eigen::MatrixX3d bent_pose(const ProblemFixture& f, Rotations* R) {
+  Eigen::MatrixX3d bent = f.mesh.V;
+  for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.1 * bent(i, 0) * bent(i, 0);
+  best_rotations(*f.graph, f.mesh.V, bent, R);
+  return bent;
+}
+
+/// Prepares *data for exact global steps of f's problem at beta: method direct,
+/// or iterative with CG to 1e-12.
+inline void exact_global_steps(const ProblemFixture& f, const char* method, double beta,
+                               LocalGlobalData* data) {
+  LinearSolverOptions solver{method};
+  solver.cg_tolerance = 1e-12;
+  solver.cg_forcing = 0;
+  local_global_precomputation(f.problem, data, solver);
+  local_global_set_beta(beta, data);
+}
+
 /// From the rotations of a bent pose of f's mesh, one global step of each
 /// linear solver (direct, and CG to 1e-12) zeroes the energy's gradient at
 /// those rotations, and energy_after_global_step is the energy there: each
 /// solves the step's whole system, its low-rank parts included.
 inline void expect_global_steps_reach_the_minimiser(const ProblemFixture& f, double beta) {
-  Eigen::MatrixX3d bent = f.mesh.V;
-  for (int i = 0; i < f.n; ++i) bent(i, 1) += 0.1 * bent(i, 0) * bent(i, 0);
   Rotations R;
-  best_rotations(*f.graph, f.mesh.V, bent, &R);
+  const Eigen::MatrixX3d bent = bent_pose(f, &R);
   Eigen::MatrixX3d grad_at_bent;
   total_energy(f.problem, bent, R, beta, &grad_at_bent);
   for (const char* method : {"direct", "iterative"}) {
-    LinearSolverOptions solver{method};
-    solver.cg_tolerance = 1e-12;
-    solver.cg_forcing = 0;
     LocalGlobalData data;
-    local_global_precomputation(f.problem, &data, solver);
-    local_global_set_beta(beta, &data);
+    exact_global_steps(f, method, beta, &data);
     EXPECT_TRUE(energy_bounded(data)) << method;
     Eigen::MatrixX3d Q = bent.rowwise() - bent.colwise().mean();
     global_step(data, R, &Q);
