@@ -24,4 +24,14 @@ namespace unfold {
 std::vector<int> distance_clusters(const Eigen::MatrixX3d& V, const EdgeGraph& graph, int count,
                                    int* cells);
 
+/// distance_clusters' result: each vertex's cell, and how many cells.
+struct DistanceClusters {
+  std::vector<int> cell_of;
+  int count = 0;
+};
+
+/// The same as a DistanceClusters.
+DistanceClusters make_distance_clusters(const Eigen::MatrixX3d& V, const EdgeGraph& graph,
+                                        int count);
+
 }  // namespace unfold

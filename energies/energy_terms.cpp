@@ -39,7 +39,8 @@ Eigen::VectorXd stretch_mass_shares(Eigen::VectorXd shares, const EnergyOptions&
 
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
                               const EnergyOptions& options, const Eigen::VectorXd& masses,
-                              const std::vector<double>& arap_factors) {
+                              const std::vector<double>& arap_factors,
+                              const DistanceClusters* clusters) {
   EnergyTerms terms;
   const Eigen::VectorXd spread_masses = stretch_masses(tets, options, masses);
   terms.push_back(std::make_unique<StretchEnergy>(
@@ -50,11 +51,15 @@ EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const E
                             options.stretch_local_regions})
           : SpreadRegions{}));
   if (options.stretch_distance > 0) {
-    int clusters = 0;
-    std::vector<int> cluster_of =
-        distance_clusters(tets.V, *graph, options.stretch_distance_clusters, &clusters);
+    DistanceClusters made;
+    if (!clusters) {
+      made = make_distance_clusters(tets.V, *graph, options.stretch_distance_clusters);
+      clusters = &made;
+    } else if (clusters->cell_of.size() != size_t(graph->num_vertices)) {
+      throw UsageError("make_energy_terms: the given clusters are not one per graph vertex");
+    }
     terms.push_back(std::make_unique<DistanceSpreadEnergy>(
-        std::move(cluster_of), clusters, spread_masses,
+        clusters->cell_of, clusters->count, spread_masses,
         distance_spread_weight(tets.V, spread_masses, options.stretch_distance)));
   }
   std::vector<double> weights;

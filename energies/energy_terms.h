@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "energies/distance_clusters.h"
 #include "energies/energy_term.h"
 #include "mesh/edge_graph.h"
 #include "mesh/tet_mesh.h"
@@ -45,12 +46,15 @@ Eigen::VectorXd stretch_mass_shares(Eigen::VectorXd shares, const EnergyOptions&
 ///        (stretch_mass_shares); when empty, those of the lumped volumes of tets.T
 /// @param arap_factors per graph edge, factors of the ARAP weights (soft joints,
 ///        energies/soft_joint_factors.h); empty: none
+/// @param clusters the spread by distances' clusters (stretch.distance > 0), made
+///        already for this mesh and options.stretch_distance_clusters; null: made here
 /// @throws UsageError for an unknown arap_weights or stretch_masses, lumped masses
 ///         asked of a mesh without tets and none given, or arap_factors not one per
 ///         edge; InputError for a bad pairs file
 EnergyTerms make_energy_terms(const TetMesh& tets, const std::shared_ptr<const EdgeGraph>& graph,
                               const EnergyOptions& options,
                               const Eigen::VectorXd& masses = Eigen::VectorXd(),
-                              const std::vector<double>& arap_factors = {});
+                              const std::vector<double>& arap_factors = {},
+                              const DistanceClusters* clusters = nullptr);
 
 }  // namespace unfold

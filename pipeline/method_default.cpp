@@ -19,18 +19,15 @@ Method default_method(const Options& options) {
       tetrahedralize_the_input().when(surface_open),
       surface_geodesic_rows(),
   };
-  // The anchor unit depends on the surface alone: beside the one-threaded
-  // solve of a small surface, else beside the soft joints' filter (three
-  // one-threaded factorizations), out of the way of the solves' and the
-  // winding numbers' threads.
-  if (integrate)
-    stages.push_back(anchor_unit().when(small_surface).on_the_side(kForkAlongsideThreads));
+  // The anchor unit depends on the surface alone: beside the surface's
+  // lambda_2 (one thread: a factorization and a Lanczos run), out of the way
+  // of the solves' threads and of the soft joints' filter (its three
+  // factorizations on two threads).
+  if (integrate) stages.push_back(anchor_unit().on_the_side(kForkAlongsideThreads));
   append(&stages, {lambda2_and_beta(surface), cascade(surface)});
   if (softens(options))
-    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface)});
-  if (integrate)
-    stages.push_back(anchor_unit().unless(small_surface).on_the_side(kForkAlongsideThreads));
-  if (softens(options)) stages.push_back(soft_joints_filter(surface));
+    append(&stages, {soft_joints_lambda2(surface), soft_joints_cascade(surface),
+                     soft_joints_filter(surface)});
   stages.push_back(full_resolution().when(coarse_surface_solve));
   // Given tets: as the run that made them on its unfolded shape did, when
   // they say where (--rest_tet_output's .vtu), else the interior placed.

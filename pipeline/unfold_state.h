@@ -43,6 +43,7 @@ struct UnfoldState {
   SurfaceCoarsening coarsening;
   CascadeSetup setup;               ///< lambda_2 and beta, for the next cascade
   std::string first_solver;         ///< the first solve's linear solver (soft joints reuse it)
+  EarlierSetup first_setup;         ///< what the first solve's setup hands on to the soft joints'
   Eigen::MatrixX3d first_solution;  ///< soft joints: the first solve's positions
   int first_iterations = 0;
   double anchor_lambda2 = 0;  ///< the integration's anchor unit

@@ -268,6 +268,7 @@ Stage lambda2_and_beta(CascadeDomain domain) {
         take_setup(s, setup_cascade(domain_graph(s, domain), domain_mesh(s, domain), s.mesh.surface,
                                     setup_options(s.options), {}, s.coarsening.masses));
         s.first_solver = s.setup.backend_options.linear_solver.method;
+        s.first_setup = {s.setup.problem->distance_clusters, s.setup.fiedler_vector};
       },
       StagePart::unfold, StageTimer::lambda2);
 }
@@ -300,7 +301,7 @@ Stage soft_joints_lambda2(CascadeDomain domain) {
         take_setup(
             s, setup_cascade(graph, mesh, s.mesh.surface, softened,
                              soft_joint_factors(graph, mesh.V, s.first_solution, s.options.soften),
-                             s.coarsening.masses));
+                             s.coarsening.masses, &s.first_setup));
       },
       StagePart::unfold, StageTimer::lambda2);
 }
@@ -571,10 +572,6 @@ bool given_tets_made_unfolded(const UnfoldState& state) {
 
 bool contact(const UnfoldState& state) {
   return !given_tets(state) && (contact_faces_found(state) || state.contact_bridge);
-}
-
-bool small_surface(const UnfoldState& state) {
-  return state.mesh.surface.V.rows() < kMinParallelRows;
 }
 
 bool softens(const Options& options) {

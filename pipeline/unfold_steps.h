@@ -58,8 +58,6 @@ bool given_tets_made_unfolded(const UnfoldState& state);
 /// tets not given, and parts in contact: intersecting faces far apart, or an
 /// input tet bridging them (check_contact_bridges)
 bool contact(const UnfoldState& state);
-/// fewer surface vertices than kMinParallelRows: the surface solve runs on one thread
-bool small_surface(const UnfoldState& state);
 /// soften.scale > 0 with an ARAP term: the surface solve again, the joints softened
 bool softens(const Options& options);
 /// soften.filter or soften.filter_stretch > 0: the soft joints' change filtered

@@ -19,6 +19,21 @@ namespace unfold {
 double fiedler_value(const Eigen::SparseMatrix<double>& L,
                      const Eigen::VectorXd& masses = Eigen::VectorXd());
 
+/// lambda_2 and its eigenvector, in the symmetric form's coordinates (M^{1/2} x).
+struct FiedlerPair {
+  double value = 0;
+  Eigen::VectorXd vector;
+};
+
+/// The same as fiedler_value, with the eigenvector; from `start`, when given, the
+/// vector of a problem near this one (the same graph reweighted: soft joints): the
+/// Lanczos run is then shorter (11 solves instead of 21 on david0's surface).
+/// @param start empty, or one entry per vertex
+/// @throws as fiedler_value, and UsageError if start has the wrong size
+FiedlerPair fiedler_pair(const Eigen::SparseMatrix<double>& L,
+                         const Eigen::VectorXd& masses = Eigen::VectorXd(),
+                         const Eigen::VectorXd& start = Eigen::VectorXd());
+
 /// The same by LOBPCG preconditioned with an AMG hierarchy of L (solvers/lobpcg.h):
 /// no factorization, near-linear in n; relative accuracy about 1e-12. Graphs of
 /// fewer than 100 vertices go to the direct overload.

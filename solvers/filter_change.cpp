@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -76,22 +77,36 @@ Eigen::MatrixX3d filter_change(const EdgeGraph& graph, const Eigen::MatrixX3d& P
     const Eigen::AngleAxisd turn(D[size_t(i)]);
     omega.row(i) = turn.angle() * turn.axis().transpose();
   }
+  const Eigen::VectorXd inverse_squared = inverse_squared_lengths(graph, P);
+  // F = (I + l^2 / 1.5 L_P)^-1: on a regular triangulation of spacing h,
+  // sum_j (f_j - f_i) / h^2 is 1.5 Laplace(f), hence the 1.5. Its factor, or
+  // none for length 0 (kept whole).
+  const auto filter = [&graph, &inverse_squared](double length) {
+    std::unique_ptr<SparseLdlt> F;
+    if (length == 0) return F;
+    const Eigen::SparseMatrix<double> A =
+        laplacian_plus(graph, length * length / 1.5 * inverse_squared, 1.0);
+    F = std::make_unique<SparseLdlt>();
+    F->analyze(A);
+    F->factorize(A);
+    return F;
+  };
+  const auto filtered = [](const SparseLdlt* F, const Eigen::MatrixX3d& f) {
+    if (!F) return f;
+    Eigen::MatrixX3d x;
+    F->solve(f, &x);
+    return x;
+  };
+  // The three factorizations are independent, each on one thread: the two
+  // filters' beside the rebuild's (david0's surface: the stage 0.34 -> 0.23 s).
+  std::future<Eigen::MatrixX3d> omega_filtered = std::async(
+      std::launch::async, [&] { return filtered(filter(options.rotation_length).get(), omega); });
+  std::future<std::unique_ptr<SparseLdlt>> stretch_filter =
+      std::async(std::launch::async, filter, options.stretch_length);
   const Eigen::SparseMatrix<double> L =
       laplacian_plus(graph, Eigen::VectorXd::Ones(graph.num_edges()), kShift);
   SparseLdlt solver;
   solver.analyze(L);
-  const Eigen::VectorXd inverse_squared = inverse_squared_lengths(graph, P);
-  // F = (I + l^2 / 1.5 L_P)^-1: on a regular triangulation of spacing h,
-  // sum_j (f_j - f_i) / h^2 is 1.5 Laplace(f), hence the 1.5.
-  auto filtered = [&](const Eigen::MatrixX3d& f, double length) {
-    if (length == 0) return f;
-    solver.factorize(laplacian_plus(graph, length * length / 1.5 * inverse_squared, 1.0));
-    Eigen::MatrixX3d x;
-    solver.solve(f, &x);
-    return x;
-  };
-  const Eigen::MatrixX3d omega_filtered = filtered(omega, options.rotation_length);
-
   solver.factorize(L);
   // The ARAP term at rest S1 (uniform weights) gives the right side,
   // sum_j (R_i + R_j)/2 (s1_i - s1_j); it reads the graph only within this call.
@@ -105,9 +120,9 @@ Eigen::MatrixX3d filter_change(const EdgeGraph& graph, const Eigen::MatrixX3d& P
     solver.solve(b, &x);
     return x;
   };
-  const Eigen::MatrixX3d turned = rebuild(exponentials(omega_filtered));
   const Eigen::MatrixX3d stretch = S2 - rebuild(D);
-  return turned + filtered(stretch, options.stretch_length);
+  const Eigen::MatrixX3d turned = rebuild(exponentials(omega_filtered.get()));
+  return turned + filtered(stretch_filter.get().get(), stretch);
 }
 
 }  // namespace unfold

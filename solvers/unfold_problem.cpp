@@ -10,11 +10,17 @@ namespace unfold {
 
 UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
                                   const EnergyOptions& options, const Eigen::VectorXd& masses,
-                                  const std::vector<double>& arap_factors) {
+                                  const std::vector<double>& arap_factors,
+                                  std::shared_ptr<const DistanceClusters> clusters) {
   UnfoldProblem problem;
   problem.graph = std::make_shared<const EdgeGraph>(std::move(graph));
   problem.rest = mesh.V;
-  problem.terms = make_energy_terms(mesh, problem.graph, options, masses, arap_factors);
+  if (options.stretch_distance > 0 && !clusters)
+    clusters = std::make_shared<const DistanceClusters>(
+        make_distance_clusters(mesh.V, *problem.graph, options.stretch_distance_clusters));
+  if (options.stretch_distance > 0) problem.distance_clusters = std::move(clusters);
+  problem.terms = make_energy_terms(mesh, problem.graph, options, masses, arap_factors,
+                                    problem.distance_clusters.get());
   return problem;
 }
 

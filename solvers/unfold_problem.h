@@ -18,17 +18,23 @@ struct UnfoldProblem {
   std::shared_ptr<const EdgeGraph> graph;  ///< shared with the terms that read it
   Eigen::MatrixX3d rest;
   EnergyTerms terms;
+  /// the spread by distances' clusters (stretch.distance > 0), for a problem on
+  /// the same mesh with other weights to share (soft joints); null: no such term
+  std::shared_ptr<const DistanceClusters> distance_clusters;
   int num_vertices() const { return graph->num_vertices; }
 };
 
 /// The problem of the terms `options` enable on `mesh`, owning its graph.
 /// @param graph  the edge graph of mesh (of its surface when mesh.T is empty)
 /// @param masses, arap_factors as make_energy_terms
+/// @param clusters another problem's distance_clusters on this mesh and graph; null: made
+///        here when options.stretch_distance > 0
 /// @throws as make_energy_terms
 UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
                                   const EnergyOptions& options,
                                   const Eigen::VectorXd& masses = Eigen::VectorXd(),
-                                  const std::vector<double>& arap_factors = {});
+                                  const std::vector<double>& arap_factors = {},
+                                  std::shared_ptr<const DistanceClusters> clusters = nullptr);
 
 /// E(Q; R) = sum_t w_t(beta) e_t(Q; R); with grad, its gradient at fixed R
 /// (grad is resized to n x 3). At the optimal R (fit_rotations) this is also

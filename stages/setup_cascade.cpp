@@ -32,19 +32,23 @@ Eigen::VectorXd stretch_masses(const TetMesh& mesh, const SurfaceMesh& surface,
 // From this many vertices linear_solver.method: auto builds the AMG hierarchy
 // while it decides: every volume-filled mesh this large goes iterative, and
 // of the shared meshes (all direct up to centaur's 17k) only cat0/cat1 (33k)
-// reach it, both iterative (docs/performance.md).
+// reach it, both iterative (docs/performance.md). A surface alone (no tets)
+// factors far more cheaply (david0's 52k vertices: 0.09 GFlop, auto's default
+// bound 0.3), so from kSpeculativeAmgSurfaceVertices on: no hierarchy built
+// only to be dropped, on the core the anchor unit's lambda_2 runs on.
 constexpr int kSpeculativeAmgVertices = 20000;
+constexpr int kSpeculativeAmgSurfaceVertices = 100000;
 
 }  // namespace
 
 CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const SurfaceMesh& surface,
                            const CascadeSetupOptions& options,
                            const std::vector<double>& arap_factors,
-                           const Eigen::VectorXd& given_masses) {
+                           const Eigen::VectorXd& given_masses, const EarlierSetup* earlier) {
   CascadeSetup setup;
   const Eigen::VectorXd masses = stretch_masses(mesh, surface, options.energy, given_masses);
-  setup.problem = std::make_unique<UnfoldProblem>(
-      make_unfold_problem(mesh, graph, options.energy, masses, arap_factors));
+  setup.problem = std::make_unique<UnfoldProblem>(make_unfold_problem(
+      mesh, graph, options.energy, masses, arap_factors, earlier ? earlier->clusters : nullptr));
   const int n = graph.num_vertices;
   // The solver is decided once here (it needs a symbolic analysis), for
   // lambda_2 and the backend alike; the iterative one's AMG hierarchy serves both.
@@ -62,7 +66,8 @@ CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Su
   // kSpeculativeAmgVertices on, where auto nearly always goes iterative, the
   // hierarchy is built on the other core meanwhile (dropped if it goes direct).
   std::future<std::pair<std::shared_ptr<AmgData>, double>> speculative_amg;
-  if (solver.method == "auto" && n >= kSpeculativeAmgVertices)
+  if (solver.method == "auto" &&
+      n >= (mesh.T.rows() > 0 ? kSpeculativeAmgVertices : kSpeculativeAmgSurfaceVertices))
     speculative_amg = std::async(std::launch::async, build_amg);
   solver.method = use_iterative_solver(solver, L) ? "iterative" : "direct";
   if (solver.method == "iterative") {
@@ -78,7 +83,10 @@ CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const Su
                                [problem = setup.problem.get(), backend = setup.backend_options] {
                                  return make_backend(backend, *problem, nullptr);
                                });
-    setup.lambda2 = fiedler_value(L, masses);
+    FiedlerPair fiedler =
+        fiedler_pair(L, masses, earlier ? earlier->fiedler_vector : Eigen::VectorXd());
+    setup.lambda2 = fiedler.value;
+    setup.fiedler_vector = std::move(fiedler.vector);
   }
   setup.beta = starting_beta(options.beta_mode, options.beta_value, options.raise_beta_to_bound, n,
                              setup.lambda2, options.energy.stretch_weight);

@@ -32,6 +32,13 @@ struct CascadeSetupOptions {
   bool raise_beta_to_bound = true;  ///< a starting beta below the bound is raised above it
 };
 
+/// What a setup hands on to a later one on the same mesh and graph with other
+/// weights (soft joints), so that it is not made again.
+struct EarlierSetup {
+  std::shared_ptr<const DistanceClusters> clusters;  ///< the spread by distances' (or null)
+  Eigen::VectorXd fiedler_vector;  ///< direct solver: lambda_2's eigenvector, the next one's start
+};
+
 struct CascadeSetup {
   std::unique_ptr<UnfoldProblem> problem;  ///< on the heap: the backend's setup reads it
   /// options.backend, the linear solver decided (direct or iterative)
@@ -44,6 +51,7 @@ struct CascadeSetup {
   /// direct: the backend being set up meanwhile; invalid: solve_cascade sets it up
   std::future<std::unique_ptr<CascadeBackend>> backend;
   std::vector<std::string> warnings;  ///< beta raised to the bound
+  Eigen::VectorXd fiedler_vector;     ///< direct: lambda_2's eigenvector; iterative: empty
 };
 
 /// Sets up the cascade of `options` on the vertices and edges of `mesh`.
@@ -54,10 +62,13 @@ struct CascadeSetup {
 /// @param masses        stretch.masses lumped: the vertices' masses when mesh is
 ///                      neither tets nor surface (a coarse graph of the surface); empty:
 ///                      mesh's own
+/// @param earlier       what an earlier setup on the same mesh and graph hands on; null:
+///                      none, everything made here
 /// @throws NumericalError when lambda_2 cannot be found, UsageError for bad options
 CascadeSetup setup_cascade(const EdgeGraph& graph, const TetMesh& mesh, const SurfaceMesh& surface,
                            const CascadeSetupOptions& options,
                            const std::vector<double>& arap_factors = {},
-                           const Eigen::VectorXd& masses = Eigen::VectorXd());
+                           const Eigen::VectorXd& masses = Eigen::VectorXd(),
+                           const EarlierSetup* earlier = nullptr);
 
 }  // namespace unfold

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "config/options.h"
@@ -16,6 +18,7 @@
 #include "pipeline/unfold_surface.h"
 #include "shapes/articulated_shape.h"
 #include "solvers/cascade.h"
+#include "stages/setup_cascade.h"
 #include "test_meshes.h"
 #include "test_problem.h"
 
@@ -62,6 +65,87 @@ TEST(DistanceClusters, SeedEveryPartAndRefuseTooManyParts) {
   EXPECT_EQ(cell[0], cell[2]);
   EXPECT_THROW(distance_clusters(V, graph, 1, &cells), InputError);
   EXPECT_THROW(distance_clusters(V, graph, 0, &cells), UsageError);
+}
+
+// The farthest-point seeds as the definition picks them, each the first vertex
+// of largest distance along the edges from the seeds so far (a whole scan per
+// seed), cells by one Dijkstra from all seeds: what distance_clusters must give,
+// whatever shortcut it takes to the farthest vertex.
+std::vector<int> clusters_by_definition(const Eigen::MatrixX3d& V, const EdgeGraph& graph,
+                                        int count) {
+  const int n = graph.num_vertices;
+  std::vector<double> nearest(size_t(n), std::numeric_limits<double>::infinity());
+  std::vector<int> cell(size_t(n), -1);
+  for (int made = 0, seed = 0; made < count; ++made) {
+    nearest[size_t(seed)] = 0;
+    cell[size_t(seed)] = made;
+    // Relax until nothing changes (Bellman-Ford: slow, and plainly right).
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int v = 0; v < n; ++v)
+        for (int k = graph.offsets[size_t(v)]; k < graph.offsets[size_t(v) + 1]; ++k) {
+          const int u = graph.neighbors[size_t(k)];
+          const double d = nearest[size_t(v)] + (V.row(v) - V.row(u)).norm();
+          if (d < nearest[size_t(u)]) {
+            nearest[size_t(u)] = d;
+            cell[size_t(u)] = cell[size_t(v)];
+            changed = true;
+          }
+        }
+    }
+    seed = int(std::max_element(nearest.begin(), nearest.end()) - nearest.begin());
+  }
+  return cell;
+}
+
+// Over several blocks of the farthest-vertex search (256 vertices each), on a
+// grid moved at random so that no two distances tie: the same seeds, the same cells.
+TEST(DistanceClusters, SeedsAreTheFarthestVerticesAsDefined) {
+  TetMesh mesh = test::grid_tet_mesh(16, 7, 6);
+  ASSERT_GT(mesh.V.rows(), 3 * 256);
+  std::srand(5);
+  mesh.V += 0.3 * Eigen::MatrixX3d::Random(mesh.V.rows(), 3);
+  const EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  for (const int count : {1, 40, 200}) {
+    int cells = 0;
+    EXPECT_EQ(distance_clusters(mesh.V, graph, count, &cells),
+              clusters_by_definition(mesh.V, graph, count))
+        << count << " seeds";
+    EXPECT_EQ(cells, count);
+  }
+}
+
+// The soft joints' setup takes the first setup's clusters (the same mesh) and
+// starts lambda_2 from its vector: the same clusters object, and the lambda_2
+// and beta a setup made from nothing finds.
+TEST(DistanceClusters, ALaterSetupOnTheSameMeshSharesThem) {
+  const TetMesh mesh = test::grid_tet_mesh(10, 3, 2);
+  const EdgeGraph graph = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  CascadeSetupOptions options;
+  options.backend.linear_solver.method = "direct";
+  options.energy = Options().energy;  // the default's: the spread by distances, lumped masses
+  ASSERT_GT(options.energy.stretch_distance, 0);
+  const CascadeSetup first = setup_cascade(graph, mesh, SurfaceMesh{}, options);
+  ASSERT_TRUE(first.problem->distance_clusters);
+  const EarlierSetup earlier{first.problem->distance_clusters, first.fiedler_vector};
+  std::vector<double> factors(size_t(graph.num_edges()), 1.0);
+  for (int e = 0; e < graph.num_edges(); ++e)
+    if (std::min(mesh.V(graph.edges(e, 0), 0), mesh.V(graph.edges(e, 1), 0)) < 5 &&
+        std::max(mesh.V(graph.edges(e, 0), 0), mesh.V(graph.edges(e, 1), 0)) >= 5)
+      factors[size_t(e)] = 0.4;
+  const CascadeSetup later =
+      setup_cascade(graph, mesh, SurfaceMesh{}, options, factors, {}, &earlier);
+  const CascadeSetup fresh = setup_cascade(graph, mesh, SurfaceMesh{}, options, factors);
+  EXPECT_EQ(later.problem->distance_clusters, first.problem->distance_clusters);
+  EXPECT_EQ(later.problem->distance_clusters->cell_of, fresh.problem->distance_clusters->cell_of);
+  EXPECT_LT(later.lambda2, first.lambda2);
+  EXPECT_NEAR(later.lambda2, fresh.lambda2, 1e-10 * fresh.lambda2);
+  EXPECT_NEAR(later.beta.start, fresh.beta.start, 1e-9 * fresh.beta.start);
+  // Clusters of another mesh are refused.
+  const DistanceClusters wrong{{0, 0, 0}, 1};
+  EXPECT_THROW(make_energy_terms(mesh, std::make_shared<const EdgeGraph>(graph), options.energy, {},
+                                 {}, &wrong),
+               UsageError);
 }
 
 struct SpreadSetup {

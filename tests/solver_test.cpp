@@ -138,6 +138,39 @@ TEST(SolverFiedler, MatchesDenseEigenvalues) {
   EXPECT_NEAR(fiedler_value(L), dense.eigenvalues()(1), 1e-9);
 }
 
+// Started from the vector of the graph before some edges were weakened (soft
+// joints), lambda_2 of the reweighted graph is the one found without a start.
+TEST(SolverFiedler, StartedFromANearbyProblemsVectorFindsTheSameValue) {
+  const TetMesh mesh = test::grid_tet_mesh(12, 3, 2);
+  const EdgeGraph g = build_edge_graph(int(mesh.V.rows()), mesh.T);
+  const Eigen::SparseMatrix<double> L = graph_laplacian(g);
+  Eigen::VectorXd masses = Eigen::VectorXd::LinSpaced(L.rows(), 0.5, 2.0);
+  const FiedlerPair before = fiedler_pair(L, masses);
+  EXPECT_DOUBLE_EQ(before.value, fiedler_value(L, masses));
+  ASSERT_EQ(before.vector.size(), L.rows());
+  // Edges across the middle at half their weight.
+  std::vector<Eigen::Triplet<double>> weakened;
+  for (int e = 0; e < g.num_edges(); ++e) {
+    const int i = g.edges(e, 0), j = g.edges(e, 1);
+    const bool middle =
+        std::min(mesh.V(i, 0), mesh.V(j, 0)) < 6 && std::max(mesh.V(i, 0), mesh.V(j, 0)) >= 6;
+    const double w = middle ? 0.5 : 1.0;
+    weakened.insert(weakened.end(), {{i, i, w}, {j, j, w}, {i, j, -w}, {j, i, -w}});
+  }
+  Eigen::SparseMatrix<double> L2(L.rows(), L.cols());
+  L2.setFromTriplets(weakened.begin(), weakened.end());
+  const FiedlerPair started = fiedler_pair(L2, masses, before.vector);
+  const double fresh = fiedler_value(L2, masses);
+  EXPECT_LT(fresh, before.value);
+  EXPECT_NEAR(started.value, fresh, 1e-10 * fresh);
+  // The vector found is an eigenvector: M^{-1/2} L2 M^{-1/2} v = lambda v.
+  const Eigen::VectorXd s = masses.cwiseSqrt().cwiseInverse();
+  const Eigen::VectorXd v = started.vector.normalized();
+  EXPECT_LT((s.asDiagonal() * (L2 * (s.asDiagonal() * v)) - started.value * v).norm(),
+            1e-6 * started.value);
+  EXPECT_THROW(fiedler_pair(L2, masses, Eigen::VectorXd::Ones(3)), UsageError);
+}
+
 struct Fixture : test::ProblemFixture {
   Fixture() : ProblemFixture(test::grid_tet_mesh(6, 2, 2, 0.5)) {}
 };
