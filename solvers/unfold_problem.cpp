@@ -15,10 +15,11 @@ UnfoldProblem make_unfold_problem(const TetMesh& mesh, EdgeGraph graph,
   UnfoldProblem problem;
   problem.graph = std::make_shared<const EdgeGraph>(std::move(graph));
   problem.rest = mesh.V;
-  if (options.stretch_distance > 0 && !clusters)
-    clusters = std::make_shared<const DistanceClusters>(
-        make_distance_clusters(mesh.V, *problem.graph, options.stretch_distance_clusters));
-  if (options.stretch_distance > 0) problem.distance_clusters = std::move(clusters);
+  if (options.stretch_distance > 0)
+    problem.distance_clusters =
+        clusters ? std::move(clusters)
+                 : std::make_shared<const DistanceClusters>(make_distance_clusters(
+                       mesh.V, *problem.graph, options.stretch_distance_clusters));
   problem.terms = make_energy_terms(mesh, problem.graph, options, masses, arap_factors,
                                     problem.distance_clusters.get());
   return problem;
