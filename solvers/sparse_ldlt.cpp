@@ -5,14 +5,17 @@
 
 #include <Eigen/SparseCholesky>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "core/errors.h"
+#include "solvers/subtree_parallel_solve.h"
 
 namespace unfold {
 namespace {
 
-// Rows from which a solve's three columns go to two threads.
+// Rows from which a factor's solves are split among the threads: below it one
+// thread does them (opening a parallel region costs more than it saves).
 constexpr int kMinParallelSolveRows = 20000;
 
 // A's lower triangle as a CHOLMOD matrix of the given xtype (pattern, or real
@@ -51,45 +54,34 @@ struct SparseLdlt::Impl {
   // kCholmodCholesky: the supernodal analysis, kept because each
   // factorization's factor is turned simplicial for the solves.
   cholmod_factor* supernodal = nullptr;
-  // The solves' workspaces: [0] for x and y, [1] for z when the columns are
-  // solved on two threads (each with its own cholmod_common, which CHOLMOD
-  // writes to), else [0] for all three.
-  struct Workspace {
-    cholmod_common common;
-    cholmod_dense* X = nullptr;
-    cholmod_dense* Y = nullptr;
-    cholmod_dense* E = nullptr;
-  };
-  Workspace work[2];
+  // The solves of the current factor (CHOLMOD backends).
+  std::unique_ptr<SubtreeParallelSolve> solves;
   bool cholmod_started = false;
   int n = -1;
 
   ~Impl() {
     if (!cholmod_started) return;
-    for (Workspace& w : work) {
-      cholmod_free_dense(&w.X, &w.common);
-      cholmod_free_dense(&w.Y, &w.common);
-      cholmod_free_dense(&w.E, &w.common);
-      cholmod_finish(&w.common);
-    }
     cholmod_free_factor(&L, &common);
     cholmod_free_factor(&supernodal, &common);
     cholmod_free_sparse(&A, &common);
     cholmod_finish(&common);
   }
 
-  // Columns [first, first + count) of x = A^{-1} b, into w.X; false if CHOLMOD fails.
-  bool solve_columns(const Eigen::MatrixX3d& b, int first, int count, Workspace* w) const {
-    cholmod_dense B;  // a view of b: CHOLMOD only reads it
-    B.nrow = size_t(n);
-    B.ncol = size_t(count);
-    B.nzmax = B.nrow * B.ncol;
-    B.d = B.nrow;
-    B.x = const_cast<double*>(b.col(first).data());
-    B.z = nullptr;
-    B.xtype = CHOLMOD_REAL;
-    B.dtype = CHOLMOD_DOUBLE;
-    return cholmod_solve2(CHOLMOD_A, L, &B, nullptr, &w->X, nullptr, &w->Y, &w->E, &w->common);
+  // The solves of the simplicial factor L, made anew with each factor (2-4 ms
+  // at 53k rows). On david0's anchored ARAP steps (53k rows, 2.35M entries)
+  // CHOLMOD's own solves took 7.8-9 ms (a column on a second thread), these
+  // 5.2-7.2 ms (docs/performance.md, solves by subtrees).
+  void make_solves() {
+    SubtreeParallelSolve::Factor f;
+    f.n = n;
+    f.column_start = static_cast<const int*>(L->p);
+    f.column_count = static_cast<const int*>(L->nz);
+    f.row = static_cast<const int*>(L->i);
+    f.value = static_cast<const double*>(L->x);
+    f.permutation = static_cast<const int*>(L->Perm);
+    f.cholesky = L->is_ll;
+    solves = std::make_unique<SubtreeParallelSolve>(
+        f, n >= kMinParallelSolveRows ? omp_get_max_threads() : 1);
   }
 
   // Copies the lower triangle of M's values (pattern fixed by analyze) into A.
@@ -105,7 +97,6 @@ struct SparseLdlt::Impl {
 SparseLdlt::SparseLdlt(Backend backend) : backend_(backend), impl_(new Impl) {
   if (backend_ != Backend::kEigen) {
     cholmod_start(&impl_->common);
-    for (Impl::Workspace& w : impl_->work) cholmod_start(&w.common);
     impl_->cholmod_started = true;
     // Supernodal is LL^T only: the simplicial LDL^T serves indefinite matrices.
     const bool cholesky = backend_ == Backend::kCholmodCholesky;
@@ -126,6 +117,7 @@ void SparseLdlt::analyze(const Eigen::SparseMatrix<double>& A) {
       throw NumericalError("SparseLdlt: symbolic analysis failed (Eigen backend)");
     return;
   }
+  m.solves.reset();
   cholmod_free_factor(&m.L, &m.common);
   cholmod_free_factor(&m.supernodal, &m.common);
   cholmod_free_sparse(&m.A, &m.common);
@@ -159,6 +151,7 @@ void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
     negative_pivots_ = int((D.array() < 0).count());
     return;
   }
+  m.solves.reset();
   m.copy_lower_values(A);
   if (backend_ == Backend::kCholmodCholesky) {
     if (!m.L->is_super) {  // the last factorization's, turned simplicial
@@ -170,12 +163,14 @@ void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
     if (!cholmod_factorize(m.A, m.L, &m.common) || m.L->minor < m.L->n)
       throw NumericalError("SparseLdlt: not positive definite (CHOLMOD LL^T stopped at column " +
                            std::to_string(m.L->minor) + ")");
-    // Solves by the simplicial sweeps: through ATLAS a supernodal solve of two
-    // columns took twice as long (david11's anchored steps, docs/performance.md).
+    // Solves by the simplicial sweeps (SubtreeParallelSolve): through ATLAS a
+    // supernodal solve of two columns took twice as long as CHOLMOD's
+    // simplicial one (david11's anchored steps, docs/history/performance.md).
     if (!cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0, /*to_packed=*/1,
                                /*to_monotonic=*/1, m.L, &m.common))
       throw NumericalError("SparseLdlt: CHOLMOD could not convert the factor (status " +
                            std::to_string(m.common.status) + ")");
+    m.make_solves();
     return;
   }
   // CHOLMOD's LDL^T does not stop at negative pivots; a zero one sets L->minor < n.
@@ -192,6 +187,7 @@ void SparseLdlt::factorize(const Eigen::SparseMatrix<double>& A) {
       throw NumericalError("SparseLdlt: zero or non-finite pivot at column " + std::to_string(j));
     negative_pivots_ += d < 0;
   }
+  m.make_solves();
 }
 
 void SparseLdlt::solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const {
@@ -201,32 +197,8 @@ void SparseLdlt::solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const {
     *x = m.eigen.solve(b);
     return;
   }
-  // From kMinParallelSolveRows on, z is solved on a second thread beside x and
-  // y (each solve's triangular sweeps run on one thread): david0's anchored
-  // ARAP steps (55k rows) took 13 ms a solve, 10.5 ms so (docs/history/performance.md).
-  const bool split = m.n >= kMinParallelSolveRows && omp_get_max_threads() > 1;
-  bool solved[2] = {true, true};
-  if (split) {
-#pragma omp parallel sections num_threads(2)
-    {
-#pragma omp section
-      solved[0] = m.solve_columns(b, 0, 2, &m.work[0]);
-#pragma omp section
-      solved[1] = m.solve_columns(b, 2, 1, &m.work[1]);
-    }
-  } else {
-    solved[0] = m.solve_columns(b, 0, 3, &m.work[0]);
-  }
-  for (int k = 0; k < 2; ++k)
-    if (!solved[k])
-      throw NumericalError("SparseLdlt: CHOLMOD solve failed (status " +
-                           std::to_string(m.work[k].common.status) + ")");
-  const int first = split ? 2 : 3;
-  x->resize(m.n, 3);
-  x->leftCols(first) =
-      Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(m.work[0].X->x), m.n, first);
-  if (split)
-    x->col(2) = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(m.work[1].X->x), m.n);
+  if (!m.solves) throw UsageError("SparseLdlt::solve: no factorization to solve with");
+  m.solves->solve(b, x);
 }
 
 double predicted_factorization_flops(const Eigen::SparseMatrix<double>& A) {

@@ -42,8 +42,11 @@ class SparseLdlt {
 
   /// x = A^{-1} b for the last factorized A. Reuses internal buffers: no
   /// allocation after the first call, and not safe to call concurrently. CHOLMOD
-  /// backends, from 20,000 rows on with two OpenMP threads or more: z is solved
-  /// on a second thread beside x and y (the same solution to roundoff).
+  /// backends: the three columns in one pass over the factor, from 20,000 rows
+  /// on its elimination tree's subtrees on the OpenMP threads
+  /// (SubtreeParallelSolve: the same solution to roundoff whatever the thread
+  /// count).
+  /// @throws UsageError if b's rows are not A's or nothing was factorized
   /// @param b n x 3; x is resized to n x 3 (may not alias b)
   void solve(const Eigen::MatrixX3d& b, Eigen::MatrixX3d* x) const;
 
