@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <functional>
 #include <queue>
 #include <string>
 #include <utility>
@@ -45,46 +46,48 @@ Split split_tree(const std::vector<int>& parent, const std::vector<double>& work
   for (int j = 0; j < n; ++j)
     if (parent[size_t(j)] >= 0) children[size_t(next[size_t(parent[size_t(j)])]++)] = j;
 
+  // Nodes taken one by one, each time the root of the largest subtree; the
+  // best prefix of them is the top.
   using Entry = std::pair<double, int>;  // (subtree work, root): ties by index
-  const auto take = [&](int budget, std::priority_queue<Entry>* frontier, double* top,
-                        std::vector<int>* taken) {
-    double total = 0;
-    for (const int r : roots) {
-      frontier->emplace(subtree[size_t(r)], r);
-      total += subtree[size_t(r)];
-    }
-    double best = total;  // nothing taken: one group holds all, as if serial
-    int best_taken = 0;
-    for (int k = 0; !frontier->empty(); ++k) {
-      const double cost = *top + std::max(frontier->top().first, total / groups);
-      if (cost < best) best = cost, best_taken = k;
-      if (k == budget || *top >= best) return best_taken;
-      const int r = frontier->top().second;
-      frontier->pop();
-      *top += work[size_t(r)];
-      total -= work[size_t(r)];
-      if (taken) taken->push_back(r);
-      for (int c = child_start[size_t(r)]; c < child_start[size_t(r) + 1]; ++c)
-        frontier->emplace(subtree[size_t(children[size_t(c)])], children[size_t(c)]);
-    }
-    return best_taken;
-  };
   std::priority_queue<Entry> frontier;
-  double top = 0;
-  const int budget = take(n, &frontier, &top, nullptr);
-  // The same steps again, up to the best.
-  frontier = {};
-  top = 0;
+  double total = 0, top = 0;  // the frontier's work, the taken nodes'
+  for (const int r : roots) {
+    frontier.emplace(subtree[size_t(r)], r);
+    total += subtree[size_t(r)];
+  }
   std::vector<int> taken;
-  take(budget, &frontier, &top, &taken);
-  split.top_work = top;
-  for (const int r : taken) split.group[size_t(r)] = -1;
+  double best = total;  // nothing taken: one group holds all, as if serial
+  size_t best_taken = 0;
+  while (!frontier.empty()) {
+    const double cost = top + std::max(frontier.top().first, total / groups);
+    if (cost < best) best = cost, best_taken = taken.size();
+    if (top >= best) break;  // taking more only adds to the top
+    const int r = frontier.top().second;
+    frontier.pop();
+    top += work[size_t(r)];
+    total -= work[size_t(r)];
+    taken.push_back(r);
+    for (int c = child_start[size_t(r)]; c < child_start[size_t(r) + 1]; ++c)
+      frontier.emplace(subtree[size_t(children[size_t(c)])], children[size_t(c)]);
+  }
+  taken.resize(best_taken);
+  for (const int r : taken) {
+    split.group[size_t(r)] = -1;
+    split.top_work += work[size_t(r)];
+  }
+  // The subtrees below the top: roots and the top's children not taken.
+  std::vector<Entry> subtrees;
+  for (int j = 0; j < n; ++j)
+    if (split.group[size_t(j)] != -1 &&
+        (parent[size_t(j)] < 0 || split.group[size_t(parent[size_t(j)])] == -1))
+      subtrees.emplace_back(subtree[size_t(j)], j);
+  std::sort(subtrees.begin(), subtrees.end(), std::greater<Entry>());
   std::vector<double> load(size_t(groups), 0.0);
   std::vector<int> root_group(size_t(n), -2);
-  for (; !frontier.empty(); frontier.pop()) {  // largest first
+  for (const auto& [w, r] : subtrees) {  // largest first, to the least loaded group
     const int g = int(std::min_element(load.begin(), load.end()) - load.begin());
-    load[size_t(g)] += frontier.top().first;
-    root_group[size_t(frontier.top().second)] = g;
+    load[size_t(g)] += w;
+    root_group[size_t(r)] = g;
   }
   for (int j = n - 1; j >= 0; --j) {
     if (split.group[size_t(j)] == -1) continue;
