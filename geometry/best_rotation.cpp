@@ -82,7 +82,7 @@ Eigen::Matrix3d best_rotation(const Eigen::Matrix3d& cov, const Eigen::Matrix3d&
 // one cell's alone). The sums are in the order Eigen's 3x3 products took
 // when this was written with them (R^T M: left to right; R U: left to right
 // in rows 0 and 1, right to left in row 2), so the rotations are bit for bit
-// those of before (docs/performance.md).
+// those of before (docs/history/performance.md).
 __attribute__((target_clones("avx2", "default"))) void best_rotations_from_guesses(
     const Eigen::Matrix3d* const* cov, Eigen::Matrix3d* const* rotation, int count) {
   constexpr int L = kRotationPacket;

@@ -70,7 +70,7 @@ struct SparseLdlt::Impl {
   // The solves of the simplicial factor L, made anew with each factor (2-4 ms
   // at 53k rows). On david0's anchored ARAP steps (53k rows, 2.35M entries)
   // CHOLMOD's own solves took 7.8-9 ms (a column on a second thread), these
-  // 5.2-7.2 ms (docs/performance.md, solves by subtrees).
+  // 5.2-7.2 ms (docs/history/performance.md, solves by subtrees).
   void make_solves() {
     SubtreeParallelSolve::Factor f;
     f.n = n;

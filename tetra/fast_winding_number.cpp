@@ -193,7 +193,7 @@ constexpr float kFloatDoubtful = 1e-4f;
 // packet's lanes is branch-free (inactive lanes computed, their terms not
 // added), so GCC vectorizes it, two lanes per SSE2 instruction and four in
 // the AVX2 clone, picked at load time where the CPU has it (david0's carve
-// 1.11 -> 0.77 s, docs/performance.md). Each query meets the nodes it meets
+// 1.11 -> 0.77 s, docs/history/performance.md). Each query meets the nodes it meets
 // alone, in the same order, so its sum is the one-query walk's bit for bit.
 // Real is double (the accurate values) or float (classify's coarse pass: twice
 // the lanes per instruction). In float the corner offsets are taken in double

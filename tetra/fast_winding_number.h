@@ -77,7 +77,7 @@ struct ClassifyOptions {
 /// tree's accuracy in double. Elsewhere the coarse value is kept: it differs from the
 /// tree-accuracy one by at most 0.205 over the 15.4 million queries the
 /// default's carves make on ../shared/data's 22 shapes and faust_remeshed
-/// (docs/performance.md), so it is on the same side of 1/2, and within
+/// (docs/history/performance.md), so it is on the same side of 1/2, and within
 /// `margin` of the tree-accuracy value (the robust route's rescue counts on both).
 Eigen::VectorXd fast_winding_number_classify(const FastWindingNumberTree& tree,
                                              const Eigen::MatrixX3d& Q,
