@@ -10,7 +10,8 @@ The same library as the command-line tool `unfold`: same config keys, same
 results, same metrics. Errors raise unfold.Error subclasses (ConfigError,
 InputError, NumericalError, OutputError) with the command line's one-line
 message. Progress goes to the logging module's "unfold" logger (silent unless
-logging is configured, e.g. logging.basicConfig(level=logging.INFO)).
+logging is configured): each stage's lines at INFO (e.g.
+logging.basicConfig(level=logging.INFO)), each iteration's too at DEBUG.
 """
 
 # The imports are private (underscored): dir(unfold) lists the API alone, __all__.
