@@ -127,6 +127,7 @@ inline std::string help_text(const std::string& name, const AppHelp& help, bool 
 #undef UNFOLD_HELP_KEY
     for (const auto& [flag, key] : keys) group(config_key_topic(key.first)).flags.push_back(flag);
   }
+  group("Messages").flags.push_back("verbosity");  // every app's (app_main.h)
   std::set<std::string> listed;
   for (const auto& g : groups) listed.insert(g.flags.begin(), g.flags.end());
 
@@ -155,9 +156,11 @@ inline std::string help_text(const std::string& name, const AppHelp& help, bool 
   }
   out += "\n" +
          detail::wrap("Messages go to stderr as '" + name +
-                          ": ...' lines; --v=1 adds the solvers' per-iteration lines, with glog's "
-                          "full prefix (time, thread, source line). --helpfull also lists the "
-                          "flags of logging and flag parsing (glog, gflags).",
+                          ": ...' lines: warnings and errors always, each stage's lines with -v "
+                          "(--verbosity 1), each iteration's too with -vv (--verbosity 2). glog's "
+                          "--v=1 is -vv with glog's full prefix (time, thread, source line) on "
+                          "every line, which --log_prefix alone also gives. --helpfull also lists "
+                          "the flags of logging and flag parsing (glog, gflags).",
                       0, 0) +
          "\n";
   if (!full) return out;

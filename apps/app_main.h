@@ -1,21 +1,24 @@
 // What every unfold command-line app shares: gflags parsing that reports bad
 // flags as usage errors (exit 2) instead of gflags' own exit 1, the app's own
-// --help (app_help.h), log lines on stderr as "<app>: ..." (glog's full prefix
-// with --v >= 1 or an explicit --log_prefix), the progress line on a terminal
-// (ProgressScope), and the mapping of library
-// exceptions to one-line messages and exit codes (docs/errors.md).
+// --help (app_help.h), how much it says (--verbosity, -v, -vv), log lines on
+// stderr as "<app>: ..." (glog's full prefix with --v >= 1 or an explicit
+// --log_prefix), the progress line on a terminal (ProgressScope), and the
+// mapping of library exceptions to one-line messages and exit codes
+// (docs/errors.md).
 #pragma once
 
 #include <gflags/gflags.h>
 #include <glog/logging.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "apps/app_help.h"
 #include "core/errors.h"
@@ -23,7 +26,41 @@
 #include "core/progress.h"
 #include "core/terminal_progress.h"
 
+// Its own flag rather than glog's --v: that one also turns on the VLOG lines of
+// the libraries below (Ceres) and glog's full prefix.
+DEFINE_int32(verbosity, 0,
+             "what goes to stderr besides warnings, errors and the results (and on a terminal "
+             "the progress line): 1 (-v) also each stage's lines, 2 (-vv) each iteration's too");
+
 namespace unfold::app {
+
+// The verbosity shorthands as --verbosity: "-v" is 1, "-vv" 2 (one level per
+// v), "-v N" (N digits) N. The apps take no other arguments, so a number after
+// -v can only be its level.
+inline std::vector<std::string> expand_verbosity_shorthands(int argc, char** argv) {
+  std::vector<std::string> args;
+  for (int i = 0; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--") {
+      args.insert(args.end(), argv + i, argv + argc);
+      break;
+    }
+    if (i == 0 || arg.size() < 2 || arg[0] != '-' ||
+        arg.find_first_not_of('v', 1) != std::string::npos) {
+      args.push_back(arg);
+      continue;
+    }
+    std::string level = std::to_string(arg.size() - 1);
+    if (arg == "-v" && i + 1 < argc && argv[i + 1][0] != '\0' &&
+        std::strspn(argv[i + 1], "0123456789") == std::strlen(argv[i + 1]))
+      level = argv[++i];
+    args.push_back("--verbosity=" + level);
+  }
+  return args;
+}
+
+/// How much the app says on stderr: --verbosity, and at least 2 with glog's --v >= 1.
+inline int verbosity() { return FLAGS_v > 0 ? std::max(FLAGS_verbosity, 2) : FLAGS_verbosity; }
 
 // Validates each --flag against gflags' registry before gflags parses them.
 inline void check_flags(int argc, char** argv) {
@@ -95,8 +132,11 @@ inline bool full_log_prefix() {
 
 // Log lines go to stderr, prefixed by the app's name unless the user asked for
 // glog's own prefix (time, thread id, source line) with --v >= 1 or --log_prefix.
+// The library logs its stages' lines at INFO: shown from verbosity 1 only.
 inline void start_logging(const char* name) {
+  if (FLAGS_verbosity < 0) throw UsageError("--verbosity must be >= 0");
   FLAGS_logtostderr = true;
+  if (verbosity() < 1) FLAGS_minloglevel = std::max(FLAGS_minloglevel, int(google::GLOG_WARNING));
   if (full_log_prefix())
     google::InitGoogleLogging(name);
   else
@@ -110,18 +150,21 @@ inline bool stderr_is_terminal() {
   return ::isatty(STDERR_FILENO) == 1 && !(term && std::strcmp(term, "dumb") == 0);
 }
 
-/// While alive, on a terminal: the library's progress reports (core/progress.h)
-/// drawn as one line rewritten in place on stderr, and the log lines printed
-/// above it (glog then writes through this sink instead of to stderr). When
-/// stderr is a file or a pipe, or `enabled` is false: nothing changes, the log
-/// lines are plain lines as they come.
-class ProgressScope : public google::LogSink {
+/// While alive, the app's listener of the library's reports (core/progress.h).
+/// On a terminal, with `line`: the progress drawn as one line rewritten in
+/// place on stderr, and the log lines printed above it (glog then writes
+/// through this sink instead of to stderr); when stderr is a file or a pipe,
+/// or without `line`: no line, the log lines plain as they come. From
+/// verbosity 2 the solvers' lines of detail are logged too (at INFO).
+class ProgressScope : public google::LogSink, public ProgressListener {
  public:
-  ProgressScope(const char* name, bool enabled)
-      : name_(name), display_(name, stderr, enabled && stderr_is_terminal(), 0.25) {
+  ProgressScope(const char* name, bool line)
+      : name_(name),
+        display_(name, stderr, line && stderr_is_terminal(), 0.25),
+        details_(verbosity() >= 2) {
+    if (display_.active() || details_) set_progress_listener(this);
     if (!display_.active()) return;
     full_prefix_ = full_log_prefix();
-    set_progress_listener(&display_);
     google::AddLogSink(this);
     for (int severity = 0; severity < google::NUM_SEVERITIES; ++severity)
       google::SetLogDestination(severity, "");  // no log files either
@@ -134,15 +177,20 @@ class ProgressScope : public google::LogSink {
   ProgressScope& operator=(const ProgressScope&) = delete;
 
   /// Erases the progress line (before printing a result to stdout); glog
-  /// writes to stderr again.
+  /// writes to stderr again, and the library's reports go nowhere.
   void finish() {
+    set_progress_listener(nullptr);
     if (!display_.active()) return;
     FLAGS_logtostderr = true;
     FLAGS_stderrthreshold = saved_threshold_;
     google::RemoveLogSink(this);
-    set_progress_listener(nullptr);
     display_.finish();
   }
+
+  void stage(const std::string& name) override { display_.stage(name); }
+  void step(int done, int total) override { display_.step(done, total); }
+  bool wants_details() const override { return details_; }
+  void detail(const std::string& line) override { LOG(INFO) << line; }
 
   void send(google::LogSeverity severity, const char* full_filename, const char* base_filename,
             int line, const google::LogMessageTime& time, const char* message,
@@ -159,6 +207,7 @@ class ProgressScope : public google::LogSink {
  private:
   std::string name_;
   TerminalProgress display_;
+  const bool details_;
   bool full_prefix_ = false;
   int saved_threshold_ = 0;
 };
@@ -176,6 +225,12 @@ inline int run_main(const char* name, const AppHelp& help, int argc, char** argv
       return 0;
     }
     gflags::SetUsageMessage(help.usage);  // for gflags' --helpxml
+    std::vector<std::string> args = expand_verbosity_shorthands(argc, argv);
+    std::vector<char*> pointers;
+    for (std::string& arg : args) pointers.push_back(arg.data());
+    argc = int(pointers.size());
+    pointers.push_back(nullptr);
+    argv = pointers.data();
     check_flags(argc, argv);
     gflags::ParseCommandLineFlags(&argc, &argv, true);
     start_logging(name);

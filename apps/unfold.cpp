@@ -86,7 +86,7 @@ DEFINE_string(convergence_png, "",
 DEFINE_string(config, "", "YAML config; empty: the built-in defaults (= configs/default.yaml)");
 DEFINE_bool(progress, true,
             "on a terminal: a progress line (stage, iterations, elapsed time) rewritten in place "
-            "on stderr; plain lines when stderr is a file or a pipe");
+            "on stderr; none when stderr is a file or a pipe");
 
 namespace {
 

@@ -37,9 +37,11 @@ int main(int argc, char** argv) {
         FLAGS_input.empty()
             ? unfold::make_articulated_shape(unfold::ShapePose::named(FLAGS_demo_pose))
             : unfold::read_surface_mesh(FLAGS_input);
+    unfold::app::ProgressScope progress("unfold_compare", false);  // -vv's lines of detail
     const auto rows = unfold::compare_configs(
         surface, configs,
         FLAGS_fixed_beta > 0 ? std::optional<double>(FLAGS_fixed_beta) : std::nullopt);
+    progress.finish();
     std::fputs(unfold::format_comparison(rows).c_str(), stdout);
     if (!FLAGS_csv.empty()) unfold::write_comparison_csv(FLAGS_csv, rows);
     return 0;

@@ -95,7 +95,12 @@ int run_batch(const unfold::Options& options) {
   batch.canonical_dir = FLAGS_canonical_dir;
   batch.evaluate = FLAGS_evaluate;
   batch.progress = FLAGS_progress;
-  const unfold::MatchBatch result = unfold::run_match_batch(pairs, batch, options);
+  unfold::MatchBatch result;
+  {
+    // No progress line: the lines per pair are the progress.
+    unfold::app::ProgressScope progress("unfold_match", false);
+    result = unfold::run_match_batch(pairs, batch, options);
+  }
   int failed = 0, first_code = 0;
   for (const auto& p : result.pairs) {
     if (p.error.empty()) continue;

@@ -1,6 +1,7 @@
 #include "core/progress.h"
 
 #include <atomic>
+#include <sstream>
 
 namespace unfold {
 namespace {
@@ -17,6 +18,14 @@ void report_stage(const std::string& name) {
 
 void report_step(int done, int total) {
   if (ProgressListener* listener = installed.load()) listener->step(done, total);
+}
+
+void report_detail(const std::function<void(std::ostream&)>& write) {
+  ProgressListener* listener = installed.load();
+  if (!listener || !listener->wants_details()) return;
+  std::ostringstream line;
+  write(line);
+  listener->detail(line.str());
 }
 
 }  // namespace unfold

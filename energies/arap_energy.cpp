@@ -1,6 +1,5 @@
 #include "energies/arap_energy.h"
 
-#include "core/parallel.h"
 #include "energies/difference_residual.h"
 #include "energies/residual_sum.h"
 #include "geometry/row_major.h"
@@ -41,15 +40,7 @@ void ArapEnergy::add_hessian(double scale, std::vector<Eigen::Triplet<double>>* 
 }
 
 void ArapEnergy::add_linear(const Rotations& R, double scale, Eigen::MatrixX3d* B) const {
-  // B_i = sum_j w_ij (R_i + R_j)(p_i - p_j) = R_i (L_w P)_i + sum_j R_j w_ij (p_i - p_j).
-#pragma omp parallel for schedule(static) if (graph_->num_vertices >= kMinParallelRows)
-  for (int i = 0; i < graph_->num_vertices; ++i) {
-    Eigen::Vector3d b = R[size_t(i)] * cells_.weighted_laplacian_rest.row(i).transpose();
-    for (int k = graph_->offsets[size_t(i)]; k < graph_->offsets[size_t(i) + 1]; ++k)
-      b.noalias() +=
-          R[size_t(graph_->neighbors[size_t(k)])] * cells_.weighted_edges.row(k).transpose();
-    B->row(i) += scale * b.transpose();
-  }
+  add_rotated_rest_edges(*graph_, cells_, R, scale, B);
 }
 
 void ArapEnergy::add_rotation_covariance(const Eigen::MatrixX3d& Q, double scale,

@@ -34,4 +34,16 @@ void add_cell_covariances(const EdgeGraph& graph, const CellRestEdges& rest,
   }
 }
 
+void add_rotated_rest_edges(const EdgeGraph& graph, const CellRestEdges& rest, const Rotations& R,
+                            double scale, Eigen::MatrixX3d* B) {
+  // B_i = R_i (L_w P)_i + sum_j R_j w_ij (p_i - p_j).
+#pragma omp parallel for schedule(static) if (graph.num_vertices >= kMinParallelRows)
+  for (int i = 0; i < graph.num_vertices; ++i) {
+    Eigen::Vector3d b = R[size_t(i)] * rest.weighted_laplacian_rest.row(i).transpose();
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+      b.noalias() += R[size_t(graph.neighbors[size_t(k)])] * rest.weighted_edges.row(k).transpose();
+    B->row(i) += scale * b.transpose();
+  }
+}
+
 }  // namespace unfold

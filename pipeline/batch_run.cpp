@@ -252,6 +252,9 @@ void run_shape(const std::string& mesh_path, const std::vector<Options>& options
   }
   omp_set_num_threads(threads);
   set_progress_listener(nullptr);  // the parent's terminal is not the child's
+  // The log is the shape's record, not a console: its stages' lines (INFO)
+  // whatever the app shows on its own stderr.
+  FLAGS_minloglevel = google::GLOG_INFO;
   int code = 0;
   try {
     run_shape(mesh_path, options, methods, run, out);
@@ -579,12 +582,15 @@ std::vector<BatchRow> run_batch(const BatchOptions& o) {
       for (const auto& row : rows_of(mesh)) all_done = all_done && row.has_value();
     if (all_done)
       write_similarity_blocks(out, all, methods, o.shard_index, o.shard_count, o.retrieval);
-    LOG(INFO) << "shard " << o.shard_index << "/" << o.shard_count << ": "
-              << (all_done ? "wrote its block of the similarity matrices; "
-                           : "the similarity block waits for every shape (run the shard again "
-                             "with --skip_existing); ")
-              << "dataset-wide files are written by a final run without --shard "
-                 "(with --skip_existing)";
+    // Beside the lines per shape: what this run left to do.
+    progress.print_line("shard " + std::to_string(o.shard_index) + "/" +
+                            std::to_string(o.shard_count) + ": " +
+                            (all_done ? "wrote its block of the similarity matrices; "
+                                      : "the similarity block waits for every shape (run the "
+                                        "shard again with --skip_existing); ") +
+                            "dataset-wide files are written by a final run without --shard "
+                            "(with --skip_existing)",
+                        stdout);
   }
   return rows;
 }

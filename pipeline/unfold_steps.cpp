@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/fork_safety.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "energies/soft_joint_factors.h"
 #include "mesh/check_surface_mesh.h"
 #include "mesh/simplify_surface_mesh.h"
@@ -465,9 +466,11 @@ Stage untangle() {
     s.result.untangle = untangle_tets(tets_made_at(s), tets.V, tets.T, s.options.untangle,
                                       &s.result.cascade.positions, &faces);
     const UntangleReport& r = s.result.untangle;
-    VLOG(1) << "untangled: " << r.inverted_before << " inverted tets, " << r.inverted_after
-            << " after " << r.sweeps << " passes; " << r.moved_vertices
-            << " vertices moved, at most " << r.largest_move << " of their shortest edge";
+    report_detail([&](std::ostream& line) {
+      line << "untangled: " << r.inverted_before << " inverted tets, " << r.inverted_after
+           << " after " << r.sweeps << " passes; " << r.moved_vertices
+           << " vertices moved, at most " << r.largest_move << " of their shortest edge";
+    });
   });
 }
 

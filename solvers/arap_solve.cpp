@@ -1,7 +1,5 @@
 #include "solvers/arap_solve.h"
 
-#include <glog/logging.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -311,8 +309,10 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     level = energy;
     if (last) break;
   }
-  VLOG(1) << "ARAP: " << it << " steps, " << m << " free vertices, anchor " << options.anchor
-          << ", Anderson " << options.anderson << ", energy " << level;
+  report_detail([&](std::ostream& line) {
+    line << "ARAP: " << it << " steps, " << m << " free vertices, anchor " << options.anchor
+         << ", Anderson " << options.anderson << ", energy " << level;
+  });
   return Q;
 }
 

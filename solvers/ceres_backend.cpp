@@ -2,9 +2,9 @@
 
 #include <ceres/gradient_problem.h>
 #include <ceres/gradient_problem_solver.h>
-#include <glog/logging.h>
 
 #include "core/errors.h"
+#include "core/progress.h"
 #include "geometry/row_major.h"
 #include "metrics/edge_ratio.h"
 #include "solvers/quadratic_part.h"
@@ -52,8 +52,10 @@ class HistoryCallback : public ceres::IterationCallback {
     const Eigen::MatrixX3d Q = positions(factor_, z_, problem_.num_vertices());
     const double delta = edge_ratio(*problem_.graph, problem_.rest, Q);
     history_->push_back({int(history_->size()) + 1, cascade_, beta_, summary.cost, delta});
-    VLOG(1) << "ceres iteration " << history_->size() << " cascade " << cascade_ << " energy "
-            << summary.cost << " edge ratio " << delta;
+    report_detail([&](std::ostream& line) {
+      line << "ceres iteration " << history_->size() << " cascade " << cascade_ << " energy "
+           << summary.cost << " edge ratio " << delta;
+    });
     return ceres::SOLVER_CONTINUE;
   }
 
@@ -139,7 +141,7 @@ bool CeresBackend::run_stage(const StageOptions& options, int cascade, Eigen::Ma
   if (!z.allFinite() || summary.termination_type == ceres::FAILURE)
     throw NumericalError("the Ceres solve failed at beta = " + std::to_string(beta_) + ": " +
                          summary.message);
-  VLOG(1) << summary.BriefReport();
+  report_detail([&](std::ostream& line) { line << summary.BriefReport(); });
   *Q = positions(factor, z.data(), problem_.num_vertices());
   Q->rowwise() -= Q->colwise().mean();
   *previous_energy = summary.final_cost;

@@ -1,7 +1,6 @@
 #include "solvers/fiedler_value.h"
 
 #include <Spectra/SymEigsShiftSolver.h>
-#include <glog/logging.h>
 
 #include "core/errors.h"
 #include "core/progress.h"
@@ -56,7 +55,9 @@ double fiedler_value(const Eigen::SparseMatrix<double>& L, const AmgData& amg,
     throw NumericalError("LOBPCG for lambda_2 did not converge (relative residual " +
                          std::to_string(r.relative_residual) + " after " +
                          std::to_string(r.iterations) + " iterations)");
-  VLOG(1) << "lambda_2 = " << r.values[0] << ": LOBPCG, " << r.iterations << " iterations";
+  report_detail([&](std::ostream& line) {
+    line << "lambda_2 = " << r.values[0] << ": LOBPCG, " << r.iterations << " iterations";
+  });
   return r.values[0];
 }
 

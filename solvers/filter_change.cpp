@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "core/errors.h"
-#include "energies/arap_energy.h"
 #include "mesh/best_rotations.h"
+#include "mesh/cell_covariances.h"
 #include "solvers/sparse_ldlt.h"
 
 namespace unfold {
@@ -108,14 +108,12 @@ Eigen::MatrixX3d filter_change(const EdgeGraph& graph, const Eigen::MatrixX3d& P
   SparseLdlt solver;
   solver.analyze(L);
   solver.factorize(L);
-  // The ARAP term at rest S1 (uniform weights) gives the right side,
-  // sum_j (R_i + R_j)/2 (s1_i - s1_j); it reads the graph only within this call.
-  const ArapEnergy arap(
-      std::shared_ptr<const EdgeGraph>(std::shared_ptr<const EdgeGraph>(), &graph), S1,
-      std::vector<double>(size_t(graph.num_edges()), 1.0), 1.0);
+  // S1's cells turned by R give the right side, sum_j (R_i + R_j)/2 (s1_i - s1_j).
+  const CellRestEdges cells =
+      cell_rest_edges(graph, S1, std::vector<double>(size_t(graph.num_edges()), 1.0));
   auto rebuild = [&](const Rotations& R) {
     Eigen::MatrixX3d b = kShift * S2;
-    arap.add_linear(R, 0.5, &b);
+    add_rotated_rest_edges(graph, cells, R, 0.5, &b);
     Eigen::MatrixX3d x;
     solver.solve(b, &x);
     return x;

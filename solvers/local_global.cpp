@@ -1,7 +1,5 @@
 #include "solvers/local_global.h"
 
-#include <glog/logging.h>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -231,8 +229,10 @@ bool LocalGlobalBackend::run_stage(const StageOptions& options, int cascade, Eig
     const double delta = edge_ratio(*problem.graph, rest_lengths_, *Q);
     history->push_back({iteration, cascade, data_.beta, energy, delta});
     report_step(i, options.max_iterations);
-    VLOG(1) << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
-            << " energy " << energy << " edge ratio " << delta;
+    report_detail([&](std::ostream& line) {
+      line << "iteration " << iteration << " cascade " << cascade << " beta " << data_.beta
+           << " energy " << energy << " edge ratio " << delta;
+    });
     if (options.break_in_band && in_band(delta, options.edge_ratio_band)) return true;
     const bool converged = std::abs(energy / *previous_energy - 1.0) < options.epsilon;
     *previous_energy = energy;

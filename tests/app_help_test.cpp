@@ -1,6 +1,7 @@
 // What a new user sees first: every app's --help starts with its usage and its
 // own flags (glog's and gflags' only under --helpfull, no source paths), and
-// progress lines read "unfold: ..." without glog's "I20261124 20:38:54 ..." prefix.
+// the lines of -v and -vv read "unfold: ..." without glog's "I20261124 20:38:54
+// ..." prefix.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -120,27 +121,50 @@ TEST(AppHelp, HelpfullAddsLoggingFlagsWithoutPaths) {
 // A line in glog's own format: severity letter, date, time, thread id, file:line].
 const std::regex kGlogPrefix("^[IWEF][0-9]{8} [0-9:.]+ +[0-9]+ [^ ]+:[0-9]+\\] ");
 
-TEST(AppHelp, ProgressLinesNameTheToolUnlessVerbose) {
+// Each line of `err` starts with "unfold: " and has no glog prefix; how many
+// start with "unfold: <start>".
+int count_plain_lines(const std::string& err, const std::string& start) {
+  int count = 0;
+  for (const std::string& line : lines(err)) {
+    EXPECT_FALSE(std::regex_search(line, kGlogPrefix)) << line;
+    EXPECT_EQ(line.rfind("unfold: ", 0), 0u) << line;
+    count += line.rfind("unfold: " + start, 0) == 0;
+  }
+  return count;
+}
+
+TEST(AppHelp, VerbosityAddsStageThenIterationLinesNamingTheTool) {
   test::TempDir dir;
   const std::string input = dir.file("sphere.off");
   write_surface_mesh(input, test::uv_sphere(8, 12));
-  const AppRun plain = run_app("unfold", "--input " + input + " --output " + dir.file("plain.off"));
-  ASSERT_EQ(plain.exit_code, 0) << plain.err;
-  int progress = 0;
-  for (const std::string& line : lines(plain.err)) {
-    EXPECT_FALSE(std::regex_search(line, kGlogPrefix)) << line;
-    EXPECT_EQ(line.rfind("unfold: ", 0), 0u) << line;
-    progress += line.rfind("unfold: cascade ", 0) == 0;
+  const auto run = [&](const std::string& flags) {
+    const AppRun r =
+        run_app("unfold", flags + " --input " + input + " --output " + dir.file("out.off"));
+    EXPECT_EQ(r.exit_code, 0) << flags << ": " << r.err;
+    return r;
+  };
+  EXPECT_EQ(run("").err, "");  // the summary line alone, on stdout
+  const AppRun stages = run("-v");
+  EXPECT_GE(count_plain_lines(stages.err, "cascade "), 1) << stages.err;
+  EXPECT_GE(count_plain_lines(stages.err, "stage "), 3) << stages.err;
+  EXPECT_EQ(count_plain_lines(stages.err, "iteration "), 0) << stages.err;
+  for (const std::string flags : {"-vv", "-v 2", "--verbosity 2", "--verbosity=2"}) {
+    const AppRun iterations = run(flags);
+    EXPECT_GE(count_plain_lines(iterations.err, "iteration "), 1)
+        << flags << ": " << iterations.err;
+    EXPECT_GE(count_plain_lines(iterations.err, "stage "), 3) << flags << ": " << iterations.err;
   }
-  EXPECT_GE(progress, 1) << plain.err;
 
-  const AppRun verbose =
-      run_app("unfold", "--v=1 --input " + input + " --output " + dir.file("verbose.off"));
-  ASSERT_EQ(verbose.exit_code, 0) << verbose.err;
+  // glog's --v=1: the iteration lines too, in glog's own format.
+  const AppRun glog = run("--v=1");
   int glog_lines = 0;
-  for (const std::string& line : lines(verbose.err))
+  for (const std::string& line : lines(glog.err))
     glog_lines += std::regex_search(line, kGlogPrefix);
-  EXPECT_GT(glog_lines, progress) << verbose.err;  // the per-iteration lines too
+  EXPECT_GT(glog_lines, int(lines(stages.err).size())) << glog.err;
+
+  const AppRun negative = run_app("unfold", "--verbosity -1 --input " + input);
+  EXPECT_EQ(negative.exit_code, 2);
+  EXPECT_EQ(negative.err, "unfold: error: --verbosity must be >= 0\n");
 }
 
 TEST(AppHelp, Wolf0PrintsNoGlogPrefix) {
@@ -148,7 +172,7 @@ TEST(AppHelp, Wolf0PrintsNoGlogPrefix) {
   if (wolf.empty()) GTEST_SKIP() << "../shared/data/tosca/wolf0.off is absent";
   test::TempDir dir;
   const AppRun r = run_app(
-      "unfold", "--input " + wolf + " --output " + dir.file("wolf.off") + " --metrics none");
+      "unfold", "-v --input " + wolf + " --output " + dir.file("wolf.off") + " --metrics none");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const std::string& line : lines(r.err)) {
     EXPECT_FALSE(std::regex_search(line, kGlogPrefix)) << line;

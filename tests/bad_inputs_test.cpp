@@ -245,7 +245,8 @@ const std::vector<BadInput>& cases() {
          return "--metrics_json " + dir + "/m.json";
        },
        5, "Permission denied"},
-      // Tolerated defects and graceful paths: exit 0 with a warning.
+      // Tolerated defects and graceful paths: exit 0 with a warning, or with
+      // the path's line among the stages' (-v).
       {"nonmanifold_edge", input("nonmanifold_edge.off"), 0, "1 non-manifold edges"},
       {"nonmanifold_vertex", input("nonmanifold_vertex.off"), 0, "1 non-manifold vertices"},
       {"open_surface_on_surface_graph", input("open_surface.off", "--fallback_surface_graph true"),
@@ -254,13 +255,13 @@ const std::vector<BadInput>& cases() {
        input("self_intersecting.off",
              "--tet_shape input --tet_route conforming --fallback_surface_graph true"),
        0, "unfolding on the surface edge graph"},
-      {"self_intersecting_robust_route", input("self_intersecting.off", "--tet_shape input"), 0,
+      {"self_intersecting_robust_route", input("self_intersecting.off", "-v --tet_shape input"), 0,
        "using the robust route"},
-      {"self_intersecting_contact", input("self_intersecting.off", "--tet_shape contact"), 0,
+      {"self_intersecting_contact", input("self_intersecting.off", "-v --tet_shape contact"), 0,
        "parts passing through each other"},
-      {"self_intersecting_unfolded", input("self_intersecting.off"), 0,
+      {"self_intersecting_unfolded", input("self_intersecting.off", "-v"), 0,
        "tetrahedralized the unfolded shape (robust)"},
-      {"two_components_separately", input("two_components.off", "--components separately"), 0,
+      {"two_components_separately", input("two_components.off", "-v --components separately"), 0,
        "2 connected components"},
   };
   return table;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -95,6 +96,25 @@ std::string file_bytes(const std::string& path) {
   std::stringstream bytes;
   bytes << in.rdbuf();
   return bytes.str();
+}
+
+// Not on a terminal, a run says nothing on stderr but its warnings and errors
+// (the demo has none): its summary line goes to stdout; -v brings back the
+// stages' lines, -vv the iterations' too.
+TEST(Cli, TheDemoPrintsItsSummaryAloneUnlessVerbose) {
+  const std::string out = temp("quiet.off");
+  const AppRun quiet = run_unfold("--output " + out);
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err, "");
+  EXPECT_EQ(quiet.out.rfind("unfolded ", 0), 0u) << quiet.out;
+  EXPECT_EQ(std::count(quiet.out.begin(), quiet.out.end(), '\n'), 1) << quiet.out;
+  const AppRun verbose = run_unfold("-v --output " + out);
+  ASSERT_EQ(verbose.exit_code, 0) << verbose.err;
+  for (const char* line : {"unfold: no --input: unfolding the built-in demo shape",
+                           "\nunfold: stage surface: cascade: ", "\nunfold: cascade 1/"})
+    EXPECT_NE(verbose.err.find(line), std::string::npos) << line << " not in:\n" << verbose.err;
+  EXPECT_EQ(verbose.err.find("unfold: iteration "), std::string::npos) << verbose.err;
+  EXPECT_EQ(verbose.out.rfind("unfolded ", 0), 0u) << verbose.out;
 }
 
 // Above metrics.geodesic_max_vertices (unfold's default 20,000, lowered here so

@@ -120,5 +120,30 @@ TEST(Progress, ReportsReachTheInstalledListenerOnly) {
   EXPECT_EQ(recorder.events, (std::vector<std::string>{"cascade 1/1", "1/300"}));
 }
 
+// Records the lines of detail when it wants them.
+class DetailRecorder : public Recorder {
+ public:
+  bool wants_details() const override { return wanted; }
+  void detail(const std::string& line) override { events.push_back(line); }
+  bool wanted = false;
+};
+
+TEST(Progress, DetailsAreComposedOnlyForAListenerThatWantsThem) {
+  int composed = 0;
+  const auto iteration = [&composed](std::ostream& line) {
+    ++composed;
+    line << "iteration " << 3 << " energy " << 1.5;
+  };
+  report_detail(iteration);  // none installed
+  DetailRecorder recorder;
+  set_progress_listener(&recorder);
+  report_detail(iteration);  // not wanted
+  recorder.wanted = true;
+  report_detail(iteration);
+  set_progress_listener(nullptr);
+  EXPECT_EQ(composed, 1);
+  EXPECT_EQ(recorder.events, (std::vector<std::string>{"iteration 3 energy 1.5"}));
+}
+
 }  // namespace
 }  // namespace unfold

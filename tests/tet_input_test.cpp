@@ -112,7 +112,7 @@ TEST(TetInput, RestTetOutputGivenBackUnfoldsToTheSameCanonicalForm) {
   EXPECT_EQ(rest.V.topRows(first.V.rows()), read_surface_mesh(shape).V);
   for (const std::string tets : {"rest.vtu", "rest.node"}) {
     // The boundary taken from the tet mesh, and the surface given beside it.
-    const test::AppRun alone = run_unfold("--tet_shape input --tet_input " + dir.file(tets) +
+    const test::AppRun alone = run_unfold("-v --tet_shape input --tet_input " + dir.file(tets) +
                                           " --output " + dir.file("alone.off"));
     ASSERT_EQ(alone.exit_code, 0) << alone.err;
     EXPECT_NE(alone.err.find("given tet mesh"), std::string::npos) << alone.err;

@@ -2,7 +2,6 @@
 // interior grid points, carved by the generalized winding number. It never
 // needs the surface to be a valid piecewise-linear complex, so
 // self-intersections, non-manifold edges and small holes do not stop it.
-#include <glog/logging.h>
 #include <omp.h>
 
 #include <Eigen/Geometry>
@@ -15,6 +14,7 @@
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "core/union_find.h"
 #include "mesh/edge_graph.h"
 #include "mesh/position_order.h"
@@ -309,10 +309,12 @@ TetMesh tetrahedralize_robust(const SurfaceMesh& surface, const RobustStart& sta
     for (int k = 0; k < 4; ++k) tets.T(row, k) = index[size_t(tet(k))];
     ++row;
   }
-  VLOG(1) << "robust route: interior points " << seconds_points << " s, Delaunay (" << V.rows()
-          << " points, " << num_delaunay << " tets) " << seconds_delaunay << " s, carve ("
-          << midpoints.rows() << " edge midpoints) " << seconds_carve << " s, rescue and output "
-          << lap(&clock) << " s";
+  report_detail([&](std::ostream& line) {
+    line << "robust route: interior points " << seconds_points << " s, Delaunay (" << V.rows()
+         << " points, " << num_delaunay << " tets) " << seconds_delaunay << " s, carve ("
+         << midpoints.rows() << " edge midpoints) " << seconds_carve << " s, rescue and output "
+         << lap(&clock) << " s";
+  });
   if (report) {
     report->num_removed_tets = num_delaunay - num_kept;
     report->num_rescued_tets = rescued;

@@ -1,4 +1,5 @@
-"""The solve releases the GIL and logs through Python's logging, not stderr."""
+"""The solve releases the GIL and logs through Python's logging, not stderr:
+the stages' lines at INFO, the iterations' at DEBUG (the command line's -v, -vv)."""
 
 import logging
 import threading
@@ -33,6 +34,26 @@ def test_progress_goes_to_the_unfold_logger_and_not_to_stderr(demo, caplog, capf
     assert any("cascade" in m for m in messages), messages
     captured = capfd.readouterr()
     assert captured.err == "" and captured.out == ""
+
+
+def unfold_records(caplog, level, demo):
+    with caplog.at_level(level, logger="unfold"):
+        unfold.unfold(*demo, simplify={"target_vertices": 400})
+    return [(r.levelno, r.getMessage()) for r in caplog.records if r.name == "unfold"]
+
+
+def test_stage_lines_at_info_and_iteration_lines_at_debug(demo, caplog):
+    records = unfold_records(caplog, logging.DEBUG, demo)
+    iterations = [level for level, m in records if m.startswith("iteration ")]
+    assert iterations and set(iterations) == {logging.DEBUG}, records
+    stages = [level for level, m in records if m.startswith("stage ")]
+    assert stages and set(stages) == {logging.INFO}, records
+
+
+def test_no_iteration_lines_above_debug(demo, caplog):
+    records = unfold_records(caplog, logging.INFO, demo)
+    assert any(m.startswith("stage ") for _, m in records), records
+    assert not any(level < logging.INFO for level, _ in records), records
 
 
 def test_silent_by_default(demo, capfd):

@@ -10,19 +10,23 @@ The same library as the command-line tool `unfold`: same config keys, same
 results, same metrics. Errors raise unfold.Error subclasses (ConfigError,
 InputError, NumericalError, OutputError) with the command line's one-line
 message. Progress goes to the logging module's "unfold" logger (silent unless
-logging is configured, e.g. logging.basicConfig(level=logging.INFO)).
+logging is configured): each stage's lines at INFO (e.g.
+logging.basicConfig(level=logging.INFO)), each iteration's too at DEBUG.
 """
 
-from __future__ import annotations
+# The imports are private (underscored): dir(unfold) lists the API alone, __all__.
+from __future__ import annotations as _annotations
 
-import logging
-import os
-from collections.abc import Sequence
-from dataclasses import dataclass, field
-from typing import Any, Union
+import logging as _logging
+import os as _os
+from collections.abc import Sequence as _Sequence
+from dataclasses import dataclass as _dataclass
+from dataclasses import field as _field
+from typing import Any as _Any
+from typing import Union as _Union
 
-import numpy as np
-import numpy.typing as npt
+import numpy as _np
+import numpy.typing as _npt
 
 from . import _arrays, _config, _core, metrics
 from ._core import ConfigError, Error, InputError, NumericalError, OutputError
@@ -31,12 +35,14 @@ __all__ = ["Error", "ConfigError", "InputError", "NumericalError", "OutputError"
            "read_mesh", "write_mesh", "read_vts", "demo_shape", "unfold", "compare", "config_keys",
            "metrics", "correspond"]
 
-logging.getLogger("unfold").addHandler(logging.NullHandler())
+_logging.getLogger("unfold").addHandler(_logging.NullHandler())
 
-PathLike = Union[str, "os.PathLike[str]"]
+# os.PathLike bare: Python 3.8 cannot subscript it, and a string annotation
+# inside the alias would be looked up in whichever module uses it.
+_PathLike = _Union[str, _os.PathLike]
 
 
-@dataclass(frozen=True)
+@_dataclass(frozen=True)
 class Result:
     """One unfolding; arrays are numpy.
 
@@ -61,56 +67,56 @@ class Result:
         --skeleton_output and --canonical_skeleton_output).
     """
 
-    vertices: np.ndarray
-    faces: np.ndarray
-    metrics: dict[str, Any]
-    tet_vertices: np.ndarray
-    tets: np.ndarray
-    rest_tet_vertices: np.ndarray
-    unfolded_tet_vertices: np.ndarray = field(repr=False)
-    tet_vertex_fields: dict[str, np.ndarray] = field(repr=False)
-    tet_fields: dict[str, np.ndarray] = field(repr=False)
-    skeleton_nodes: np.ndarray = field(repr=False)
-    skeleton_edges: np.ndarray = field(repr=False)
-    canonical_skeleton_nodes: np.ndarray = field(repr=False)
+    vertices: _np.ndarray
+    faces: _np.ndarray
+    metrics: dict[str, _Any]
+    tet_vertices: _np.ndarray
+    tets: _np.ndarray
+    rest_tet_vertices: _np.ndarray
+    unfolded_tet_vertices: _np.ndarray = _field(repr=False)
+    tet_vertex_fields: dict[str, _np.ndarray] = _field(repr=False)
+    tet_fields: dict[str, _np.ndarray] = _field(repr=False)
+    skeleton_nodes: _np.ndarray = _field(repr=False)
+    skeleton_edges: _np.ndarray = _field(repr=False)
+    canonical_skeleton_nodes: _np.ndarray = _field(repr=False)
 
     @property
-    def rigidity_error(self) -> np.ndarray:
+    def rigidity_error(self) -> _np.ndarray:
         """(n,) E_rig's term of each surface vertex."""
         return self.tet_vertex_fields["rigidity_error"][: len(self.vertices)]
 
     @property
-    def stretch_ratio(self) -> np.ndarray:
+    def stretch_ratio(self) -> _np.ndarray:
         """(n,) mean canonical/rest length ratio of each surface vertex's edges."""
         return self.tet_vertex_fields["stretch_ratio"][: len(self.vertices)]
 
     @property
-    def edge_damage(self) -> np.ndarray:
+    def edge_damage(self) -> _np.ndarray:
         """(n,) the largest |ln r| of each surface vertex's surface edges, r the
         edge's canonical/rest length ratio at the rest area (the damage measure:
         metrics["damaged_edges_percent"] etc.; past ln 3 = 1.0986 an edge is damaged)."""
         return self.tet_vertex_fields["edge_damage"][: len(self.vertices)]
 
 
-def read_mesh(path: PathLike) -> tuple[np.ndarray, np.ndarray]:
+def read_mesh(path: _PathLike) -> tuple[_np.ndarray, _np.ndarray]:
     """Reads a surface mesh (.off .obj .ply .stl, as the command line).
 
     Returns (V, F): float64 (n, 3) positions and int32 (m, 3) faces (polygons
     fan-triangulated). Raises InputError naming the file and the problem.
     """
-    return _core.read_mesh(os.fspath(path))
+    return _core.read_mesh(_os.fspath(path))
 
 
-def write_mesh(path: PathLike, V: npt.ArrayLike, F: npt.ArrayLike) -> None:
+def write_mesh(path: _PathLike, V: _npt.ArrayLike, F: _npt.ArrayLike) -> None:
     """Writes a surface mesh (.off .obj .ply .stl, as the command line), atomically.
 
     V: (n, 3) numbers; F: (m, 3) integer indices into V. Raises InputError for
     bad arrays, OutputError naming the file when it cannot be written.
     """
-    _core.write_mesh(os.fspath(path), *_arrays.surface(V, F))
+    _core.write_mesh(_os.fspath(path), *_arrays.surface(V, F))
 
 
-def read_vts(path: PathLike, vertex_count: int, rows: int | None = None) -> np.ndarray:
+def read_vts(path: _PathLike, vertex_count: int, rows: int | None = None) -> _np.ndarray:
     """Reads a .vts correspondence file (as in FAUST/SHREC remeshings): one
     one-based vertex id per line, row k the same point in every pose's file.
 
@@ -119,10 +125,10 @@ def read_vts(path: PathLike, vertex_count: int, rows: int | None = None) -> np.n
     number of vertices (ids above it are refused); rows: the number of ids
     the file must hold (None: any). Raises InputError naming the file and line.
     """
-    return _core.read_vts(os.fspath(path), vertex_count, -1 if rows is None else rows)
+    return _core.read_vts(_os.fspath(path), vertex_count, -1 if rows is None else rows)
 
 
-def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[_np.ndarray, _np.ndarray]:
     """The command line's built-in demo animal (--demo_pose): pose "rest", "0", "1" or "2".
 
     resolution: edges along the body, about resolution**2 vertices, in [16, 128]
@@ -131,9 +137,9 @@ def demo_shape(pose: str = "0", resolution: int | None = None) -> tuple[np.ndarr
     return _core.demo_shape(pose, **({} if resolution is None else {"resolution": resolution}))
 
 
-def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
-           tets: npt.ArrayLike | None = None, tet_vertices: npt.ArrayLike | None = None,
-           unfolded_tet_vertices: npt.ArrayLike | None = None, **overrides: Any) -> Result:
+def unfold(V: _npt.ArrayLike, F: _npt.ArrayLike, config: _config.Config = None, *,
+           tets: _npt.ArrayLike | None = None, tet_vertices: _npt.ArrayLike | None = None,
+           unfolded_tet_vertices: _npt.ArrayLike | None = None, **overrides: _Any) -> Result:
     """Unfolds a closed triangle surface into its canonical pose.
 
     V: (n, 3) positions (any real dtype and layout); F: (m, 3) integer faces.
@@ -174,9 +180,9 @@ def unfold(V: npt.ArrayLike, F: npt.ArrayLike, config: _config.Config = None, *,
     return Result(**_core.unfold(V, F, path, flat, tets, tet_vertices, unfolded_tet_vertices))
 
 
-def compare(V: npt.ArrayLike, F: npt.ArrayLike,
-            configs: Sequence[_config.Config | tuple[str, _config.Config]],
-            fixed_beta: float | None = None) -> list[dict[str, Any]]:
+def compare(V: _npt.ArrayLike, F: _npt.ArrayLike,
+            configs: _Sequence[_config.Config | tuple[str, _config.Config]],
+            fixed_beta: float | None = None) -> list[dict[str, _Any]]:
     """Several configs on one tet mesh, as the command line unfold_compare.
 
     configs: YAML paths (a row is named by the file's stem), dicts (named
@@ -193,14 +199,14 @@ def compare(V: npt.ArrayLike, F: npt.ArrayLike,
         name, config = item if isinstance(item, tuple) else (None, item)
         path, flat = _config.split(config, {})
         if name is None:
-            name = os.path.splitext(os.path.basename(path))[0] if path else f"config{k + 1}"
+            name = _os.path.splitext(_os.path.basename(path))[0] if path else f"config{k + 1}"
         runs.append((name, path, {**flat, **fixed}))
     return _core.compare(V, F, runs)
 
 
-def correspond(source_V: npt.ArrayLike, source_F: npt.ArrayLike, target_V: npt.ArrayLike,
-               target_F: npt.ArrayLike, config: _config.Config = None,
-               **overrides: Any) -> np.ndarray:
+def correspond(source_V: _npt.ArrayLike, source_F: _npt.ArrayLike, target_V: _npt.ArrayLike,
+               target_F: _npt.ArrayLike, config: _config.Config = None,
+               **overrides: _Any) -> _np.ndarray:
     """A dense point-to-point map from one surface to another, as unfold_match.
 
     Each surface is unfolded into its canonical form; the forms are aligned
@@ -214,7 +220,7 @@ def correspond(source_V: npt.ArrayLike, source_F: npt.ArrayLike, target_V: npt.A
     VA, FA = _arrays.surface(source_V, source_F)
     VB, FB = _arrays.surface(target_V, target_F)
     path, flat = _config.split(config, overrides)
-    return np.asarray(_core.correspond(VA, FA, VB, FB, path, flat)["map"], dtype=np.int64)
+    return _np.asarray(_core.correspond(VA, FA, VB, FB, path, flat)["map"], dtype=_np.int64)
 
 
 def config_keys() -> list[tuple[str, str, str]]:

@@ -18,7 +18,9 @@ import numpy as np
 
 from . import _core
 
-Config = Union[None, str, "os.PathLike[str]", Mapping[str, Any]]
+# os.PathLike bare: Python 3.8 cannot subscript it, and a string annotation
+# inside the alias would be looked up in the module that uses it (unfold).
+Config = Union[None, str, os.PathLike, Mapping[str, Any]]
 
 _FLAG_PATHS = {flag: path for flag, path, _ in _core.config_keys()}
 

@@ -8,23 +8,27 @@ ORT; CMBOF over a set of shapes) and the retrieval measures of a dissimilarity m
 precision-recall), as retrieval.csv reports them.
 """
 
-from __future__ import annotations
+# The imports are private (underscored): dir(unfold.metrics) lists the functions alone, __all__.
+from __future__ import annotations as _annotations
 
-from collections.abc import Sequence
-from typing import Any
+from collections.abc import Sequence as _Sequence
+from typing import Any as _Any
 
-import numpy as np
-import numpy.typing as npt
+import numpy as _np
+import numpy.typing as _npt
 
 from . import _arrays, _core
-from ._core import InputError
+
+__all__ = ["e_rig", "e_str", "e_geo", "surface_damage", "surface_folds", "surface_area",
+           "pose_distance", "retrieval_distance", "ort_distance", "cmbof_matrix",
+           "retrieval_measures"]
 
 
-def _set(**options: Any) -> dict[str, Any]:
+def _set(**options: _Any) -> dict[str, _Any]:
     return {name: value for name, value in options.items() if value is not None}
 
 
-def e_rig(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike) -> float:
+def e_rig(rest: _npt.ArrayLike, deformed: _npt.ArrayLike, elements: _npt.ArrayLike) -> float:
     """E_rig: mean over vertices of how far each cell's motion is from a rotation.
 
     rest, deformed: (n, 3) positions; elements: (m, k) vertex indices (tets or
@@ -35,7 +39,7 @@ def e_rig(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike)
                        _arrays.elements(elements, len(P), None, "elements"))
 
 
-def e_str(rest: npt.ArrayLike, deformed: npt.ArrayLike, exact_limit: int | None = None,
+def e_str(rest: _npt.ArrayLike, deformed: _npt.ArrayLike, exact_limit: int | None = None,
           samples: int | None = None) -> float:
     """E_str: mean relative change of pairwise distances (s - 1 for a scale by s).
 
@@ -47,7 +51,7 @@ def e_str(rest: npt.ArrayLike, deformed: npt.ArrayLike, exact_limit: int | None 
                        **_set(exact_limit=exact_limit, samples=samples))
 
 
-def e_geo(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike,
+def e_geo(rest: _npt.ArrayLike, deformed: _npt.ArrayLike, elements: _npt.ArrayLike,
           exact_limit: int | None = None, landmarks: int | None = None) -> float:
     """E_geo: deformed Euclidean distances against rest geodesics along the elements' edges.
 
@@ -61,8 +65,8 @@ def e_geo(rest: npt.ArrayLike, deformed: npt.ArrayLike, elements: npt.ArrayLike,
                        **_set(exact_limit=exact_limit, landmarks=landmarks))
 
 
-def surface_damage(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLike,
-                   bound: float | None = None) -> dict[str, Any]:
+def surface_damage(rest: _npt.ArrayLike, deformed: _npt.ArrayLike, F: _npt.ArrayLike,
+                   bound: float | None = None) -> dict[str, _Any]:
     """Damage of a deformed surface (e.g. a canonical form) against its rest shape.
 
     rest, deformed: (n, 3) positions of one surface; F: (m, k) faces, k >= 3
@@ -83,15 +87,15 @@ def surface_damage(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLik
     P = _arrays.vertices(rest, "rest")
     Q = _arrays.vertices(deformed, "deformed")
     if len(Q) != len(P):
-        raise InputError(f"deformed has {len(Q)} vertices, rest {len(P)}")
+        raise _core.InputError(f"deformed has {len(Q)} vertices, rest {len(P)}")
     result = _core.surface_damage(P, Q, _arrays.elements(F, len(P), None, "F"),
                                   **_set(bound=bound))
-    result["per_vertex"] = np.asarray(result["per_vertex"])
+    result["per_vertex"] = _np.asarray(result["per_vertex"])
     return result
 
 
-def surface_folds(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLike,
-                  bound_degrees: float | None = None) -> dict[str, Any]:
+def surface_folds(rest: _npt.ArrayLike, deformed: _npt.ArrayLike, F: _npt.ArrayLike,
+                  bound_degrees: float | None = None) -> dict[str, _Any]:
     """Folds of a deformed surface (e.g. a canonical form) against its rest shape.
 
     rest, deformed: (n, 3) positions of one surface; F: (m, k) faces, k >= 3
@@ -113,22 +117,22 @@ def surface_folds(rest: npt.ArrayLike, deformed: npt.ArrayLike, F: npt.ArrayLike
     P = _arrays.vertices(rest, "rest")
     Q = _arrays.vertices(deformed, "deformed")
     if len(Q) != len(P):
-        raise InputError(f"deformed has {len(Q)} vertices, rest {len(P)}")
-    bound = None if bound_degrees is None else float(bound_degrees) * np.pi / 180
+        raise _core.InputError(f"deformed has {len(Q)} vertices, rest {len(P)}")
+    bound = None if bound_degrees is None else float(bound_degrees) * _np.pi / 180
     result = _core.surface_folds(P, Q, _arrays.elements(F, len(P), None, "F"),
                                  **_set(bound=bound))
-    result["per_vertex"] = np.asarray(result["per_vertex"])
+    result["per_vertex"] = _np.asarray(result["per_vertex"])
     return result
 
 
-def surface_area(V: npt.ArrayLike, F: npt.ArrayLike) -> float:
+def surface_area(V: _npt.ArrayLike, F: _npt.ArrayLike) -> float:
     """Total area of the triangles F of V."""
     return _core.surface_area(*_arrays.surface(V, F))
 
 
-def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, F: npt.ArrayLike,
-                  F_B: npt.ArrayLike | None = None, rows_a: npt.ArrayLike | None = None,
-                  rows_b: npt.ArrayLike | None = None) -> float:
+def pose_distance(A: _npt.ArrayLike, B: _npt.ArrayLike, F: _npt.ArrayLike,
+                  F_B: _npt.ArrayLike | None = None, rows_a: _npt.ArrayLike | None = None,
+                  rows_b: _npt.ArrayLike | None = None) -> float:
     """Mean distance of corresponding points of A and B, each scaled to its own
     unit surface area, after the best rigid alignment: zero for forms that
     differ by a rigid motion and a scale.
@@ -143,14 +147,14 @@ def pose_distance(A: npt.ArrayLike, B: npt.ArrayLike, F: npt.ArrayLike,
     if rows_a is None and rows_b is None and F_B is None:
         return _core.pose_distance(A, B, F)
     if rows_a is None or rows_b is None:
-        raise InputError("pose_distance: give both rows_a and rows_b, or neither")
+        raise _core.InputError("pose_distance: give both rows_a and rows_b, or neither")
     F_B = F if F_B is None else F_B
     return _core.pose_distance_on_rows(A, F, _arrays.indices(rows_a, len(A), "rows_a"), B,
                                        _arrays.elements(F_B, len(B), 3, "F_B"),
                                        _arrays.indices(rows_b, len(B), "rows_b"))
 
 
-def retrieval_distance(A: npt.ArrayLike, B: npt.ArrayLike, sample_points: int | None = None,
+def retrieval_distance(A: _npt.ArrayLike, B: _npt.ArrayLike, sample_points: int | None = None,
                        icp_iterations: int | None = None) -> float:
     """Dissimilarity of two shapes (rows need not correspond), as in the retrieval
     tables: normalised samples, best principal-axis flip, ICP, mean nearest-point distance."""
@@ -159,7 +163,7 @@ def retrieval_distance(A: npt.ArrayLike, B: npt.ArrayLike, sample_points: int | 
                                            icp_iterations=icp_iterations))
 
 
-def ort_distance(A: npt.ArrayLike, FA: npt.ArrayLike, B: npt.ArrayLike, FB: npt.ArrayLike,
+def ort_distance(A: _npt.ArrayLike, FA: _npt.ArrayLike, B: _npt.ArrayLike, FB: _npt.ArrayLike,
                  sample_points: int | None = None, icp_iterations: int | None = None) -> float:
     """ORT dissimilarity of two surfaces (rows need not correspond), as in the
     retrieval tables: each centred, scaled to unit area and oriented by PCA or
@@ -171,9 +175,9 @@ def ort_distance(A: npt.ArrayLike, FA: npt.ArrayLike, B: npt.ArrayLike, FB: npt.
                                                     icp_iterations=icp_iterations))
 
 
-def cmbof_matrix(shapes: Sequence[tuple[npt.ArrayLike, npt.ArrayLike]],
+def cmbof_matrix(shapes: _Sequence[tuple[_npt.ArrayLike, _npt.ArrayLike]],
                  view_subdivisions: int | None = None, image_size: int | None = None,
-                 words: int | None = None) -> np.ndarray:
+                 words: int | None = None) -> _np.ndarray:
     """CM-BOF dissimilarity matrix (n, n) of surfaces (V, F), as in the
     retrieval tables (Lian et al. 2013): each normalised like ORT and seen as
     depth images from the view sphere (66 views), SIFT features quantised over
@@ -184,13 +188,13 @@ def cmbof_matrix(shapes: Sequence[tuple[npt.ArrayLike, npt.ArrayLike]],
                                                image_size=image_size, words=words))
 
 
-def retrieval_measures(D: npt.ArrayLike, classes: list[str]) -> dict[str, Any]:
+def retrieval_measures(D: _npt.ArrayLike, classes: list[str]) -> dict[str, _Any]:
     """The retrieval measures of a dissimilarity matrix D (n, n; smaller = more
     similar) with a class per shape, each query leaving itself out: nn,
     first_tier, second_tier, e_measure (first 32), dcg (normalised), queries,
     and the interpolated precision at recall 0.05, ..., 1 ("recall",
     "precision"); docs/evaluation.md gives the formulas."""
-    matrix = np.asarray(D, dtype=np.float64)
+    matrix = _np.asarray(D, dtype=_np.float64)
     if matrix.ndim != 2 or matrix.shape[0] != matrix.shape[1]:
         raise _core.InputError(f"D must be a square matrix, got shape {matrix.shape}")
-    return _core.retrieval_measures(np.ascontiguousarray(matrix), [str(c) for c in classes])
+    return _core.retrieval_measures(_np.ascontiguousarray(matrix), [str(c) for c in classes])
