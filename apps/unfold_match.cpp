@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "apps/app_main.h"
 #include "apps/config_flags.h"
@@ -14,6 +16,7 @@
 #include "core/atomic_file.h"
 #include "core/output_transaction.h"
 #include "mesh/read_surface_mesh.h"
+#include "pipeline/batch_run.h"
 #include "pipeline/match_pairs.h"
 #include "pipeline/match_surfaces.h"
 #include "render/camera.h"
@@ -41,12 +44,17 @@ DEFINE_bool(evaluate, false,
             "(flip-forgiving) and print the table");
 DEFINE_string(evaluation_csv, "", "batch with --evaluate: per pair, each step's errors as CSV");
 DEFINE_string(cdf_png, "", "batch with --evaluate: cumulative error curves of each step (.png)");
+DEFINE_string(shard, "0/1",
+              "batch: i/N: match only the pairs k (in file order) with k % N == i, e.g. one "
+              "Slurm array task (each pair is decided on its own; with match.synchronize the "
+              "collection's check sees the shard's pairs)");
 DEFINE_string(config, "", "YAML config; empty: the built-in defaults (= configs/default.yaml)");
 DEFINE_bool(progress, true, "a line per pair (batch) on stderr");
 
 namespace {
 
 int run_one(const unfold::Options& options) {
+  if (FLAGS_shard != "0/1") throw unfold::UsageError("--shard needs --pairs");
   if (FLAGS_source.empty() || FLAGS_target.empty() || FLAGS_output.empty())
     throw unfold::UsageError("--source, --target and --output are required (or --pairs)");
   if (!FLAGS_render.empty()) unfold::check_png_format(FLAGS_render);
@@ -88,7 +96,15 @@ int run_batch(const unfold::Options& options) {
   }
   for (const std::string& path : {FLAGS_evaluation_csv, FLAGS_cdf_png})
     if (!path.empty()) unfold::check_writable_destination(path);
-  const auto pairs = unfold::read_shape_pairs(FLAGS_pairs);
+  const auto [shard, shards] = unfold::parse_shard(FLAGS_shard);
+  std::vector<std::pair<std::string, std::string>> pairs;
+  {
+    const auto all = unfold::read_shape_pairs(FLAGS_pairs);
+    for (size_t k = 0; k < all.size(); ++k)
+      if (int(k % size_t(shards)) == shard) pairs.push_back(all[k]);
+    if (pairs.empty())
+      throw unfold::UsageError("--shard " + FLAGS_shard + " leaves no pair of " + FLAGS_pairs);
+  }
   unfold::MatchBatchOptions batch;
   batch.input_dir = FLAGS_input_dir;
   batch.output_dir = FLAGS_output_dir;
@@ -144,7 +160,7 @@ int main(int argc, char** argv) {
       "(rigid alignment, mirror decision, ZoomOut). Every config key is also a flag.";
   help.groups = {
       {"One pair", {"source", "target", "output", "render", "render_up"}},
-      {"Batch", {"pairs", "input_dir", "output_dir", "canonical_dir", "progress"}},
+      {"Batch", {"pairs", "input_dir", "output_dir", "canonical_dir", "shard", "progress"}},
       {"Evaluation", {"evaluate", "evaluation_csv", "cdf_png"}},
       {"Method and config", {"config"}},
   };

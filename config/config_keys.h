@@ -206,9 +206,16 @@
   X(match_mirror_margin, "match.mirror_margin", match.mirror_margin,                               \
     "unfold_match: the mirror image wins below (1 - margin) times the rotation's ICP residual; "   \
     "within the margin the decision is reported as ambiguous")                                     \
+  X(match_placement, "match.placement", match.placement,                                           \
+    "unfold_match: descriptor: among the best rotation and its half turns, the placement whose "   \
+    "refined map best keeps the surfaces' curvature (front told from back); residual: the best "   \
+    "fit")                                                                                         \
+  X(match_sure_margin, "match.sure_margin", match.sure_margin,                                     \
+    "unfold_match: a placement whose runner-up disagrees less than this many times as much is "    \
+    "reported unsure")                                                                             \
   X(match_synchronize, "match.synchronize", match.synchronize,                                     \
-    "unfold_match --pairs: a pair's best rotation that disagrees with the ones its cycles "        \
-    "through the other shapes imply is replaced by theirs")                                        \
+    "unfold_match --pairs: an unsure pair's rotation that disagrees with the one its cycles "      \
+    "through sure pairs imply is replaced by it")                                                  \
   X(match_refine, "match.refine", match.refine,                                                    \
     "unfold_match: zoomout (ZoomOut on the input surfaces' Laplace-Beltrami bases) or none")       \
   X(match_spectral_size, "match.spectral_size", match.spectral_size,                               \

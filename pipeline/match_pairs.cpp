@@ -1,5 +1,6 @@
 #include "pipeline/match_pairs.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -89,78 +90,73 @@ class ShapeCache {
   double seconds_ = 0;
 };
 
-// A measured rotation farther than this (degrees) from the one the
-// collection implies is replaced by it...
+// An unsure pair whose rotation is farther than this (degrees) from the one
+// the sure pairs imply is placed from it...
 constexpr double kReseatDegrees = 45;
-// ... when both its shapes are anchored: each in at least this many pairs
-// whose measurement agrees with the collection within kAgreeDegrees (in a
+// ... when both its shapes are anchored: each in at least this many sure
+// pairs whose rotation agrees with the collection within kAgreeDegrees (in a
 // lone triangle a wrong pair cannot be told from the other two).
 constexpr int kAnchoringPairs = 3;
 constexpr double kAgreeDegrees = 15;
 
-using PairKey = std::pair<std::string, std::string>;  // (source, target)
+double degrees_between(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  const double c = std::clamp(((A.transpose() * B).trace() - 1) / 2, -1.0, 1.0);
+  return std::acos(c) * 180 / M_PI;
+}
 
-// What the collection decides before the pairs are matched.
-struct CollectionPlacements {
-  /// per pair the rotation seed where the pair's own disagrees with the one
-  /// its cycles through the other shapes imply (a body placed turned round:
-  /// docs/results/correspondence.md); none elsewhere
-  std::map<PairKey, Eigen::Matrix3d> seeds;
-  /// the alignments measured, in the pairs' own direction: the matching's
-  /// start, so that no pair is aligned twice
-  std::map<PairKey, FormAlignments> aligned;
-};
-
-// match.synchronize: every pair's best-fitting rotation (align_canonical_forms)
-// synchronized over the collection (solvers/synchronize_rotations.h).
-CollectionPlacements collection_placements(ShapeCache& cache, const std::vector<PairKey>& pairs,
-                                           const MatchOptions& options, bool progress) {
-  CollectionPlacements out;
+// match.synchronize: the sure pairs' rotations synchronized over the
+// collection (solvers/synchronize_rotations.h); an unsure pair that
+// disagrees with the rotation they imply is matched again from it. A sure
+// pair is never changed, so the collection can only help.
+void place_unsure_pairs(ShapeCache& cache, const MatchOptions& options, bool progress,
+                        std::vector<PairOutcome>* outcomes) {
   std::map<std::string, int> member;
-  std::vector<const MatchShape*> shapes;
   std::vector<RelativeRotation> measured;
   std::set<std::pair<int, int>> measurement;  // (from, to), each pair once
-  for (const auto& [source, target] : pairs) {
-    const CachedShape& a = cache.get(source);
-    const CachedShape& b = cache.get(target);
-    if (!a.shape || !b.shape || source == target) continue;
-    for (const auto* s : {&a, &b}) {
-      const std::string& name = s == &a ? source : target;
-      if (member.emplace(name, int(shapes.size())).second) shapes.push_back(s->shape.get());
-    }
-    const int from = member[source], to = member[target];
+  const auto index = [&](const std::string& name) {
+    return member.emplace(name, int(member.size())).first->second;
+  };
+  for (const PairOutcome& p : *outcomes) {
+    if (!p.error.empty() || p.match.mirrored || !p.match.sure || p.source == p.target) continue;
+    const int from = index(p.source), to = index(p.target);
     if (measurement.count({from, to}) || measurement.count({to, from})) continue;
     measurement.insert({from, to});
-    FormAlignments aligned =
-        align_canonical_forms(shapes[from]->canonical, shapes[from]->F, shapes[to]->canonical,
-                              shapes[to]->F, options.alignment);
-    measured.push_back({from, to, aligned.candidates.front().linear});  // the best rotation
-    out.aligned[{source, target}] = std::move(aligned);
+    measured.push_back({from, to, p.match.rotation});
   }
-  if (measured.size() < 3) return out;
-  const SynchronizedRotations sync = synchronize_rotations(int(shapes.size()), measured);
-  std::vector<int> agreeing(shapes.size(), 0);
+  if (measured.size() < 3) return;
+  const SynchronizedRotations sync = synchronize_rotations(int(member.size()), measured);
+  std::vector<int> agreeing(member.size(), 0);
   for (size_t e = 0; e < measured.size(); ++e)
     if (sync.disagreement_degrees[e] < kAgreeDegrees) {
       ++agreeing[measured[e].from];
       ++agreeing[measured[e].to];
     }
-  std::vector<std::string> names(shapes.size());
-  for (const auto& [name, index] : member) names[index] = name;
-  for (size_t e = 0; e < measured.size(); ++e) {
-    const RelativeRotation& m = measured[e];
-    if (sync.disagreement_degrees[e] < kReseatDegrees || agreeing[m.from] < kAnchoringPairs ||
-        agreeing[m.to] < kAnchoringPairs)
+  for (PairOutcome& p : *outcomes) {
+    if (!p.error.empty() || p.match.mirrored || p.match.sure) continue;
+    const auto from = member.find(p.source), to = member.find(p.target);
+    if (from == member.end() || to == member.end() || agreeing[from->second] < kAnchoringPairs ||
+        agreeing[to->second] < kAnchoringPairs)
       continue;
-    out.seeds[{names[m.from], names[m.to]}] = sync.implied[e];
-    out.seeds[{names[m.to], names[m.from]}] = sync.implied[e].transpose();
+    const Eigen::Matrix3d implied =
+        sync.global[to->second].transpose() * sync.global[from->second];
+    const double degrees = degrees_between(implied, p.match.rotation);
+    if (degrees < kReseatDegrees) continue;
+    try {
+      const auto start = std::chrono::steady_clock::now();
+      p.match = match_shapes(*cache.get(p.source).shape, *cache.get(p.target).shape, options,
+                             &implied);
+      p.seconds += seconds_since(start);
+    } catch (const Error& e) {
+      p.error = e.what();
+      p.exit_code = e.exit_code();
+      continue;
+    }
     if (progress)
       std::fprintf(stderr,
-                   "unfold_match: %s, %s: the pair's best rotation is %.0f degrees from the one "
-                   "the other pairs imply; placed from theirs\n",
-                   names[m.from].c_str(), names[m.to].c_str(), sync.disagreement_degrees[e]);
+                   "unfold_match: %s -> %s: an unsure placement %.0f degrees from the one the "
+                   "sure pairs imply; placed from theirs\n",
+                   p.source.c_str(), p.target.c_str(), degrees);
   }
-  return out;
 }
 
 std::string sym_vts_path(const std::string& mesh_path) {
@@ -258,13 +254,6 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
     check_writable_destination(batch_options.canonical_dir + "/.unfold_match_check");
   ShapeCache cache(batch_options, options);
   MatchBatch batch;
-  const auto sync_start = std::chrono::steady_clock::now();
-  CollectionPlacements placements =
-      options.match.synchronize
-          ? collection_placements(cache, pairs, options.match, batch_options.progress)
-          : CollectionPlacements{};
-  const auto& seeds = placements.seeds;
-  batch.seconds_synchronize = seconds_since(sync_start) - cache.seconds();
   int done = 0;
   for (const auto& [source, target] : pairs) {
     PairOutcome p;
@@ -277,18 +266,8 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
       const CachedShape& b = cache.get(target);
       if (!b.shape) throw InputError(b.error);
       const auto start = std::chrono::steady_clock::now();
-      const auto seed = seeds.find({source, target});
-      FormAlignments aligned;  // freed as the pairs go
-      if (const auto found = placements.aligned.find({source, target});
-          found != placements.aligned.end()) {
-        aligned = std::move(found->second);
-        placements.aligned.erase(found);
-      }
-      p.match = match_shapes(*a.shape, *b.shape, options.match,
-                             seed == seeds.end() ? nullptr : &seed->second, std::move(aligned));
+      p.match = match_shapes(*a.shape, *b.shape, options.match);
       p.seconds = seconds_since(start);
-      batch.seconds_pairs += p.seconds;
-      write_map(p.map_path, p.match.map);
     } catch (const Error& e) {
       p.error = e.what();
       p.exit_code = e.exit_code();
@@ -312,6 +291,24 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
     }
     batch.pairs.push_back(std::move(p));
   }
+  if (options.match.synchronize) {
+    const auto start = std::chrono::steady_clock::now();
+    place_unsure_pairs(cache, options.match, batch_options.progress, &batch.pairs);
+    batch.seconds_synchronize = seconds_since(start);
+  }
+  for (PairOutcome& p : batch.pairs) {
+    if (!p.error.empty()) continue;
+    batch.seconds_pairs += p.seconds;
+    try {
+      write_map(p.map_path, p.match.map);
+    } catch (const Error& e) {
+      p.error = e.what();
+      p.exit_code = e.exit_code();
+      if (batch_options.progress)
+        std::fprintf(stderr, "unfold_match: error: pair %s %s: %s\n", p.source.c_str(),
+                     p.target.c_str(), p.error.c_str());
+    }
+  }
   if (batch_options.evaluate) evaluate(cache, &batch);
   batch.shapes = cache.count();
   batch.seconds_shapes = cache.seconds();
@@ -319,22 +316,24 @@ MatchBatch run_match_batch(const std::vector<std::pair<std::string, std::string>
 }
 
 std::string format_match_summary(const MatchBatch& batch) {
-  int ok = 0, scored = 0, mirrored = 0, ambiguous = 0, placed = 0;
+  int ok = 0, scored = 0, mirrored = 0, ambiguous = 0, placed = 0, unsure = 0;
   for (const PairOutcome& p : batch.pairs) {
     ok += p.error.empty();
     scored += !p.strict.empty();
     mirrored += p.error.empty() && p.match.mirrored;
     ambiguous += p.error.empty() && p.match.ambiguous;
     placed += p.error.empty() && p.match.from_collection;
+    unsure += p.error.empty() && !p.match.sure;
   }
   std::ostringstream out;
   char line[256];
   std::snprintf(
       line, sizeof line,
-      "%d of %zu pairs matched (%d mirrored, %d ambiguous, %d placed by the "
+      "%d of %zu pairs matched (%d mirrored, %d ambiguous, %d unsure, %d placed by the "
       "collection); %d shapes prepared in %.1f s, rotations compared in %.1f s, "
       "matching %.2f s per pair; per pair with its shares %.2f s\n",
-      ok, batch.pairs.size(), mirrored, ambiguous, placed, batch.shapes, batch.seconds_shapes,
+      ok, batch.pairs.size(), mirrored, ambiguous, unsure, placed, batch.shapes,
+      batch.seconds_shapes,
       batch.seconds_synchronize, ok ? batch.seconds_pairs / ok : 0.0,
       ok ? (batch.seconds_shapes + batch.seconds_synchronize + batch.seconds_pairs) / ok : 0.0);
   out << line;
@@ -352,7 +351,8 @@ std::string format_match_summary(const MatchBatch& batch) {
 
 void write_match_csv(const std::string& path, const MatchBatch& batch) {
   write_file_atomically(path, [&](std::ostream& out) {
-    out << "source,target,status,mirrored,ambiguous,rotation_residual,mirrored_residual,seconds";
+    out << "source,target,status,mirrored,ambiguous,rotation_residual,mirrored_residual,"
+           "placement_margin,sure,from_collection,seconds";
     for (const char* step : {"rigid", "mirror", "zoomout"})
       out << ',' << step << "_strict," << step << "_forgiving";
     out << '\n';
@@ -361,7 +361,8 @@ void write_match_csv(const std::string& path, const MatchBatch& batch) {
           p.error.empty() ? (p.evaluation_error.empty() ? "ok" : "not scored") : "failed";
       out << p.source << ',' << p.target << ',' << status << ',' << p.match.mirrored << ','
           << p.match.ambiguous << ',' << p.match.rotation_residual << ','
-          << p.match.mirrored_residual << ',' << p.seconds;
+          << p.match.mirrored_residual << ',' << p.match.placement_margin << ','
+          << p.match.sure << ',' << p.match.from_collection << ',' << p.seconds;
       for (int s = 0; s < kMatchSteps; ++s) {
         if (p.strict.empty())
           out << ",,";

@@ -155,19 +155,40 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
     out.residual = r.residual;
     out.mirrored = c.mirrored;
     out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
-    result.candidates.push_back(std::move(out));
+    return out;
+  };
+  // Two starts that ICP took to one placement count once.
+  const auto is_new = [&](const FormAlignment& a) {
+    for (const FormAlignment& b : result.candidates)
+      if ((a.linear - b.linear).norm() <= 0.2 && (a.translation - b.translation).norm() <= 0.05)
+        return false;
+    return true;
   };
   for (const bool mirrored : {false, true}) {
     std::vector<const Candidate*> kept;
     for (const Candidate& c : candidates) {
       if (c.mirrored != mirrored || int(kept.size()) >= options.keep) continue;
       if (!kept.empty() && c.residual > options.keep_ratio * kept.front()->residual) break;
-      bool distinct = true;  // two starts that ICP took to one placement count once
+      bool distinct = true;
       for (const Candidate* k : kept)
         distinct = distinct && ((k->R - c.R).norm() > 0.2 || (k->t - c.t).norm() > 0.05);
       if (distinct) kept.push_back(&c);
     }
-    for (const Candidate* c : kept) refine(*c);
+    const size_t first = result.candidates.size();
+    for (const Candidate* c : kept) result.candidates.push_back(refine(*c));
+    if (mirrored || !options.turns) continue;
+    const FormAlignment best = result.candidates[first];
+    for (int axis = 0; axis < 3; ++axis) {
+      const Eigen::Vector3d e = Et.col(axis);
+      const Eigen::Matrix3d half_turn = 2 * e * e.transpose() - Eigen::Matrix3d::Identity();
+      FormAlignment turned =
+          refine({half_turn * best.linear, half_turn * best.translation, 0, false});
+      if (is_new(turned)) result.candidates.push_back(std::move(turned));
+    }
+    std::stable_sort(result.candidates.begin() + long(first), result.candidates.end(),
+                     [](const FormAlignment& a, const FormAlignment& b) {
+                       return a.residual < b.residual;
+                     });
   }
   if (rotation_seed) add_seeded_alignment(*rotation_seed, options, &result);
   return result;

@@ -17,6 +17,10 @@ struct FormAlignmentOptions {
   /// residual is within `keep_ratio` times the best of their orientation, at most `keep`
   int keep = 1;
   double keep_ratio = 1.5;
+  /// also the best rotation turned half round about each of the target's
+  /// principal axes (a body's back placed onto its front fits about as well
+  /// as its front: which of them is right only the shapes' detail tells)
+  bool turns = true;
 };
 
 /// One rigid (or mirrored rigid) placement of the source form onto the target form.
@@ -53,7 +57,9 @@ Eigen::MatrixX3d unit_area_form(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
 /// orientation the distinct ones that fit nearly as well as the best (`keep`,
 /// `keep_ratio`: a body's front and back can fit about alike, which only
 /// intrinsic cues tell apart) refined on every vertex, ICP with nearest points
-/// both ways (so neither form's extra parts are ignored).
+/// both ways (so neither form's extra parts are ignored); with `turns`, the
+/// best rotation's three half turns about the target's axes refined the same
+/// way, those that ICP does not take onto a placement kept already.
 /// @param source_V, source_F the source's canonical form (n x 3, triangles)
 /// @param target_V, target_F the target's canonical form
 /// @param rotation_seed if given, a rotation of the unit-area forms from

@@ -22,8 +22,16 @@ struct MatchOptions {
   /// (1 - margin) times the rotation's; within the margin either way the
   /// decision is reported as ambiguous
   double mirror_margin = 0.4;
-  /// unfold_match's batch: each pair's rotation checked against the ones
-  /// its cycles through the other shapes imply (pipeline/match_pairs.h)
+  /// descriptor: among the rotations' placements (the best fit and its half
+  /// turns), the one whose refined map best keeps the shapes' multi-scale mean
+  /// curvature (what tells a body's front from its back); residual: the best
+  /// fit alone
+  std::string placement = "descriptor";
+  /// placement descriptor: a decision whose runner-up disagrees less than this
+  /// many times the chosen one's disagreement is reported unsure
+  double sure_margin = 1.05;
+  /// unfold_match's batch: an unsure pair's rotation replaced by the one its
+  /// cycles through sure pairs imply where the two differ (pipeline/match_pairs.h)
   bool synchronize = true;
   std::string refine = "zoomout";  ///< zoomout or none
   int spectral_size = 80;          ///< ZoomOut's final basis size (refine zoomout)
@@ -35,14 +43,17 @@ struct MatchOptions {
 void validate_match_options(const MatchOptions& options);
 
 /// What the matcher keeps of one shape, computed once and reused for every
-/// pair it is in: the surface, its canonical form and (refine zoomout) its
-/// Laplace-Beltrami basis.
+/// pair it is in: the surface, its canonical form, (refine zoomout) its
+/// Laplace-Beltrami basis and (placement descriptor) its curvature descriptor.
 struct MatchShape {
   Eigen::MatrixX3d V;          ///< the surface as given
   Eigen::MatrixX3d canonical;  ///< its canonical form, same vertices
   Eigen::MatrixX3i F;          ///< triangles of both
   LaplaceBeltramiBasis basis;  ///< refine zoomout: spectral_size eigenpairs, else empty
-  double seconds_basis = 0;
+  Eigen::VectorXd masses;      ///< the surface's lumped masses
+  /// placement descriptor: mean_curvature_scales of the surface, else empty
+  Eigen::MatrixXd curvature;
+  double seconds_basis = 0;  ///< the basis and the descriptor
 };
 
 /// @throws UsageError if the sizes differ; InputError if the surface has no
@@ -61,6 +72,14 @@ struct ShapeMatch {
   double mirrored_residual = 0;  ///< FormAlignments::improper.residual
   bool mirrored = false;         ///< the map chosen reverses orientation (a mirror image)
   bool ambiguous = false;        ///< the two placements fit within mirror_margin: no clear cue
+  /// the chosen placement's linear map of the unit-area forms (a rotation
+  /// unless mirrored)
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  int placements = 0;  ///< placements of the chosen orientation compared (placement descriptor)
+  /// the runner-up placement's curvature disagreement over the chosen one's
+  /// (>= 1; infinity when one placement was compared or the collection chose)
+  double placement_margin = 0;
+  bool sure = true;  ///< placement_margin >= match.sure_margin (or no choice to make)
   /// the rotation's placement came from the rotation seed (a collection's
   /// synchronized rotations), not from the pair's own best fit
   bool from_collection = false;
@@ -71,11 +90,14 @@ struct ShapeMatch {
 };
 
 /// Maps every vertex of `source` to a vertex of `target`: the canonical forms
-/// aligned (align_canonical_forms), per orientation the best-fitting
-/// placement; the mirror decision between the two by their ICP residuals (the
-/// forms' asymmetry decides; a rigid motion cannot mirror, so the rotation
-/// unless the mirror image fits clearly better); then ZoomOut on the input
-/// surfaces' Laplace-Beltrami bases, from the chosen placement's nearest points.
+/// aligned (align_canonical_forms); the mirror decision by the best ICP
+/// residual of each orientation (the forms' asymmetry decides; a rigid motion
+/// cannot mirror, so the rotation unless the mirror image fits clearly
+/// better); among the rotations' placements (placement descriptor) the one
+/// whose map, refined, disagrees least with the two surfaces' curvature
+/// descriptors on ZoomOut's samples (a body turned round maps a face onto the
+/// back of a head, toes onto heels); then ZoomOut on the input surfaces'
+/// Laplace-Beltrami bases, from the chosen placement's nearest points.
 /// @param rotation_seed if given, the rotation placement is the one refined
 ///        from this rotation of the unit-area forms (align_canonical_forms),
 ///        whatever the pair's own best-fitting rotation

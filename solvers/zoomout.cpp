@@ -42,8 +42,10 @@ std::vector<int> stride_sample(Eigen::Index n, int count) {
 
 }  // namespace
 
-Eigen::VectorXi zoomout(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
-                        const Eigen::VectorXi& initial, const ZoomOutOptions& options) {
+Eigen::MatrixXd zoomout_functional_map(const LaplaceBeltramiBasis& source,
+                                       const LaplaceBeltramiBasis& target,
+                                       const Eigen::VectorXi& initial,
+                                       const ZoomOutOptions& options) {
   if (options.start_size < 1 || options.step < 1 || options.final_size < options.start_size ||
       options.samples < 0)
     throw UsageError("zoomout: need 1 <= start_size <= final_size, step >= 1, samples >= 0");
@@ -74,18 +76,36 @@ Eigen::VectorXi zoomout(const LaplaceBeltramiBasis& source, const LaplaceBeltram
   for (int k = options.start_size;; k = std::min(k + options.step, options.final_size)) {
     Eigen::MatrixXd pulled(ns, k);
     for (Eigen::Index r = 0; r < ns; ++r) pulled.row(r) = target.phi.row(sample_map(r)).head(k);
-    const Eigen::MatrixXd C =
-        (weights.asDiagonal() * source_rows.leftCols(k)).transpose() * pulled;  // k x k
-    if (k == options.final_size) {
-      const Eigen::MatrixXf queries = source.phi.leftCols(k).cast<float>();
-      const Eigen::MatrixXf database = (target.phi.leftCols(k) * C.transpose()).cast<float>();
-      return nearest_rows_brute_force(queries, database);
-    }
+    Eigen::MatrixXd C = (weights.asDiagonal() * source_rows.leftCols(k)).transpose() * pulled;
+    if (k == options.final_size) return C;
     const Eigen::MatrixXf queries = source_rows.leftCols(k).cast<float>();
     const Eigen::MatrixXf database = (target_rows.leftCols(k) * C.transpose()).cast<float>();
     const Eigen::VectorXi nearest = nearest_rows_brute_force(queries, database);
     for (Eigen::Index r = 0; r < ns; ++r) sample_map(r) = D[nearest(r)];
   }
+}
+
+Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
+                              const Eigen::MatrixXd& C, const std::vector<int>& rows) {
+  const Eigen::Index k = C.rows();
+  if (C.cols() != k || k > source.phi.cols() || k > target.phi.cols())
+    throw UsageError("pointwise_map: a functional map of " + std::to_string(k) + " x " +
+                     std::to_string(C.cols()) + " for bases of " +
+                     std::to_string(std::min(source.phi.cols(), target.phi.cols())));
+  const Eigen::MatrixXf database = (target.phi.leftCols(k) * C.transpose()).cast<float>();
+  if (rows.empty()) return nearest_rows_brute_force(source.phi.leftCols(k).cast<float>(), database);
+  Eigen::MatrixXf queries(Eigen::Index(rows.size()), k);
+  for (size_t r = 0; r < rows.size(); ++r) {
+    if (rows[r] < 0 || rows[r] >= source.phi.rows())
+      throw UsageError("pointwise_map: a source row is out of range");
+    queries.row(Eigen::Index(r)) = source.phi.row(rows[r]).head(k).cast<float>();
+  }
+  return nearest_rows_brute_force(queries, database);
+}
+
+Eigen::VectorXi zoomout(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
+                        const Eigen::VectorXi& initial, const ZoomOutOptions& options) {
+  return pointwise_map(source, target, zoomout_functional_map(source, target, initial, options));
 }
 
 }  // namespace unfold

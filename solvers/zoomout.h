@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "solvers/laplace_beltrami_basis.h"
 
@@ -19,18 +20,34 @@ struct ZoomOutOptions {
   int samples = 2000;
 };
 
-/// For k = start_size, start_size + step, ..., final_size: C = Phi_s^T M_s
-/// Phi_t[map] (k x k, the functional map that pulls target functions back to
-/// the source), then map(i) = the target vertex j whose spectral embedding
-/// Phi_t(j, :k) C^T is nearest to Phi_s(i, :k). The maps' quality comes from the
+/// ZoomOut's iterations: for k = start_size, start_size + step, ..., final_size,
+/// C = Phi_s^T M_s Phi_t[map] (k x k, the functional map that pulls target
+/// functions back to the source), then map(i) = the target vertex j whose
+/// spectral embedding Phi_t(j, :k) C^T is nearest to Phi_s(i, :k). Every
+/// iteration on `samples` vertices of each shape (as in the paper's accelerated
+/// variant); the functional map of the last size is returned, whose pointwise
+/// map (pointwise_map) is the refined map. The maps' quality comes from the
 /// initial map's: ZoomOut keeps its left/right choice and smooths the rest.
-/// Every iteration but the last on `samples` vertices of each shape (as in the
-/// paper's accelerated variant).
 /// @param source, target Laplace-Beltrami bases (laplace_beltrami_basis) of
 ///        the two surfaces, at least final_size eigenpairs each
 /// @param initial source vertex -> target vertex (0-based), one per source vertex
-/// @return the refined map, one target vertex per source vertex
+/// @return C, final_size x final_size
 /// @throws UsageError if the sizes do not fit or an id is out of range
+Eigen::MatrixXd zoomout_functional_map(const LaplaceBeltramiBasis& source,
+                                       const LaplaceBeltramiBasis& target,
+                                       const Eigen::VectorXi& initial,
+                                       const ZoomOutOptions& options = {});
+
+/// The pointwise map of a functional map C (k x k): for each of `rows` (source
+/// vertices; empty: every vertex) the target vertex whose embedding
+/// Phi_t(j, :k) C^T is nearest to Phi_s(i, :k).
+/// @throws UsageError if C is larger than a basis or a row is out of range
+Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
+                              const Eigen::MatrixXd& C, const std::vector<int>& rows = {});
+
+/// The refined map, one target vertex per source vertex: pointwise_map of
+/// zoomout_functional_map on every source vertex.
+/// @throws as zoomout_functional_map
 Eigen::VectorXi zoomout(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
                         const Eigen::VectorXi& initial, const ZoomOutOptions& options = {});
 

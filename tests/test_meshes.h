@@ -130,6 +130,25 @@ inline Eigen::Matrix3d random_rotation(unsigned seed) {
   return q.toRotationMatrix();
 }
 
+// A small generated shape without any mirror symmetry: a sphere stretched
+// into an ellipsoid with three bumps of different sizes at places that no
+// mirror maps onto each other. The same surface at any resolution (rings,
+// segments of the underlying sphere), so two resolutions are two meshings.
+inline SurfaceMesh chiral_blob(int rings, int segments) {
+  SurfaceMesh mesh = uv_sphere(rings, segments);
+  const Eigen::Vector3d bumps[3] = {Eigen::Vector3d(0.8, 0.5, 0.3).normalized(),
+                                    Eigen::Vector3d(-0.6, 0.1, 0.8).normalized(),
+                                    Eigen::Vector3d(0.1, -0.9, -0.4).normalized()};
+  const double heights[3] = {0.6, 0.4, 0.25};
+  for (int i = 0; i < mesh.V.rows(); ++i) {
+    const Eigen::Vector3d u = mesh.V.row(i).normalized();
+    double r = 1;
+    for (int k = 0; k < 3; ++k) r += heights[k] * std::exp(-(u - bumps[k]).squaredNorm() / 0.08);
+    mesh.V.row(i) = (r * u).cwiseProduct(Eigen::Vector3d(1.8, 1.0, 0.8)).transpose();
+  }
+  return mesh;
+}
+
 /// Path of a file in the shared test data, or "" if the data is absent.
 inline std::string shared_data(const std::string& relative) {
   const char* env = std::getenv("UNFOLD_SHARED_DATA");

@@ -54,25 +54,6 @@ SurfaceMesh moved(SurfaceMesh mesh, unsigned seed) {
   return mesh;
 }
 
-// A small generated shape without any mirror symmetry: a sphere stretched
-// into an ellipsoid with three bumps of different sizes at places that no
-// mirror maps onto each other. The same surface at any resolution (rings,
-// segments of the underlying sphere), so two resolutions are two meshings.
-SurfaceMesh chiral_blob(int rings, int segments) {
-  SurfaceMesh mesh = test::uv_sphere(rings, segments);
-  const Eigen::Vector3d bumps[3] = {Eigen::Vector3d(0.8, 0.5, 0.3).normalized(),
-                                    Eigen::Vector3d(-0.6, 0.1, 0.8).normalized(),
-                                    Eigen::Vector3d(0.1, -0.9, -0.4).normalized()};
-  const double heights[3] = {0.6, 0.4, 0.25};
-  for (int i = 0; i < mesh.V.rows(); ++i) {
-    const Eigen::Vector3d u = mesh.V.row(i).normalized();
-    double r = 1;
-    for (int k = 0; k < 3; ++k) r += heights[k] * std::exp(-(u - bumps[k]).squaredNorm() / 0.08);
-    mesh.V.row(i) = (r * u).cwiseProduct(Eigen::Vector3d(1.8, 1.0, 0.8)).transpose();
-  }
-  return mesh;
-}
-
 // Its mirror image (y -> -y), faces reversed so that they still face outwards.
 SurfaceMesh mirrored(SurfaceMesh mesh) {
   mesh.V.col(1) *= -1;
@@ -126,8 +107,8 @@ TEST(UnfoldMatch, ErrorsAreGeodesicOverSqrtAreaAndForgiveTheMirror) {
 }
 
 TEST(UnfoldMatch, RigidlyMovedRemeshedCopyIsNearlyExact) {
-  const SurfaceMesh source = chiral_blob(30, 60);
-  const SurfaceMesh remeshed = chiral_blob(23, 47);
+  const SurfaceMesh source = test::chiral_blob(30, 60);
+  const SurfaceMesh remeshed = test::chiral_blob(23, 47);
   ASSERT_NE(source.V.rows(), remeshed.V.rows());
   const ShapeMatch match = match_surfaces(source, moved(remeshed, 7), Options());
   ASSERT_EQ(match.map.size(), source.V.rows());
@@ -139,7 +120,7 @@ TEST(UnfoldMatch, RigidlyMovedRemeshedCopyIsNearlyExact) {
 }
 
 TEST(UnfoldMatch, MirroredCopyIsDetectedAsMirrored) {
-  const SurfaceMesh blob = chiral_blob(24, 48);
+  const SurfaceMesh blob = test::chiral_blob(24, 48);
   // The squared spread's canonical form (configs/squared_spread.yaml): the
   // default's spread by distances splays this small blob nearly symmetric, so
   // its mirror image fits only 0.68x the rotation, inside the margin (ambiguous,
@@ -170,7 +151,7 @@ TEST(UnfoldMatch, MirroredCopyIsDetectedAsMirrored) {
 TEST(UnfoldMatch, RotationSeedDecidesThePlacement) {
   // What unfold_match --pairs does with a pair the collection corrects: the
   // rotation placement refined from the seed, whatever fits best on its own.
-  const SurfaceMesh blob = chiral_blob(24, 48);
+  const SurfaceMesh blob = test::chiral_blob(24, 48);
   const Options options;
   const MatchShape source = unfold_for_matching(blob, options);
   SurfaceMesh canonical = blob;
@@ -206,9 +187,9 @@ TEST(UnfoldMatch, BatchReportsBadPairsAndGoesOn) {
   const std::string in = dir.file("in"), out = dir.file("out");
   std::filesystem::create_directories(in);
   std::filesystem::create_directories(out);
-  const SurfaceMesh a = chiral_blob(16, 32);
+  const SurfaceMesh a = test::chiral_blob(16, 32);
   write_surface_mesh(in + "/a.off", a);
-  write_surface_mesh(in + "/b.off", moved(chiral_blob(14, 30), 2));
+  write_surface_mesh(in + "/b.off", moved(test::chiral_blob(14, 30), 2));
   // b__a.map cannot be written: a directory is in the way.
   std::filesystem::create_directories(out + "/b__a.map");
   test::write_bytes(dir.file("pairs.txt"), "# source target\na b\na missing\nb a\n");
@@ -245,7 +226,7 @@ TEST(UnfoldMatch, BatchReportsBadPairsAndGoesOn) {
 
 TEST(UnfoldMatch, OnePairBadInputsAreOneLineErrorsWithoutAMap) {
   test::TempDir dir;
-  write_surface_mesh(dir.file("a.off"), chiral_blob(16, 32));
+  write_surface_mesh(dir.file("a.off"), test::chiral_blob(16, 32));
   const std::string a = dir.file("a.off");
   struct Case {
     std::string args;

@@ -33,6 +33,8 @@ void def_match_functions(py::module_& m) {
         d["mirrored"] = match.mirrored;
         d["ambiguous"] = match.ambiguous;
         d["decision"] = match.decision;
+        d["margin"] = match.placement_margin;
+        d["sure"] = match.sure;
         return d;
       },
       py::arg("VA"), py::arg("FA"), py::arg("VB"), py::arg("FB"), py::arg("config_path"),

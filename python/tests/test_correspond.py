@@ -46,3 +46,15 @@ def test_correspond_refuses_a_bad_key():
     V, F = chiral_blob(8, 16)
     with pytest.raises(unfold.ConfigError, match="match.refine"):
         unfold.correspond(V, F, V, F, match={"refine": "icp"})
+
+
+def test_correspond_says_how_sure_its_placement_is():
+    V, F = chiral_blob(20, 40)
+    m, decision = unfold.correspond(V, F, V @ np.diag([-1.0, -1.0, 1.0]), F, return_decision=True)
+    assert m.shape == (len(V),)
+    assert set(decision) == {"margin", "sure", "mirrored", "ambiguous", "decision"}
+    # A shape without symmetry turned half round: the turn is found, and sure.
+    assert decision["sure"] and decision["margin"] > 1.05 and not decision["mirrored"]
+    assert np.linalg.norm(V[m] - V, axis=1).mean() < 0.05
+    plain = unfold.correspond(V, F, V, F, match={"placement": "residual"}, return_decision=True)[1]
+    assert plain["margin"] == np.inf and plain["sure"]

@@ -206,21 +206,29 @@ def compare(V: _npt.ArrayLike, F: _npt.ArrayLike,
 
 def correspond(source_V: _npt.ArrayLike, source_F: _npt.ArrayLike, target_V: _npt.ArrayLike,
                target_F: _npt.ArrayLike, config: _config.Config = None,
-               **overrides: _Any) -> _np.ndarray:
+               return_decision: bool = False, **overrides: _Any) -> _Any:
     """A dense point-to-point map from one surface to another, as unfold_match.
 
     Each surface is unfolded into its canonical form; the forms are aligned
-    rigidly, the map or its mirror image chosen, and the map refined by ZoomOut
-    (config keys match.*, e.g. match={"refine": "none"}). config and overrides
-    as for unfold().
+    rigidly, the map or its mirror image chosen, among the best rotation and
+    its half turns the placement that best keeps the surfaces' curvature, and
+    the map refined by ZoomOut (config keys match.*, e.g.
+    match={"refine": "none"}). config and overrides as for unfold().
 
     Returns an (n_source,) int64 array: the 0-based target vertex of each
-    source vertex. Raises ConfigError, InputError or NumericalError.
+    source vertex; with return_decision=True, (map, decision) where decision
+    is a dict: "margin" (the runner-up placement's curvature disagreement over
+    the chosen one's; inf when there was no choice), "sure" (margin at least
+    match.sure_margin: when False, look at the map), "mirrored", "ambiguous"
+    (the mirror decision) and "decision" (the summary's words). Raises
+    ConfigError, InputError or NumericalError.
     """
     VA, FA = _arrays.surface(source_V, source_F)
     VB, FB = _arrays.surface(target_V, target_F)
     path, flat = _config.split(config, overrides)
-    return _np.asarray(_core.correspond(VA, FA, VB, FB, path, flat)["map"], dtype=_np.int64)
+    result = _core.correspond(VA, FA, VB, FB, path, flat)
+    mapping = _np.asarray(result.pop("map"), dtype=_np.int64)
+    return (mapping, result) if return_decision else mapping
 
 
 def config_keys() -> list[tuple[str, str, str]]:
