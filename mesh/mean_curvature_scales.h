@@ -11,7 +11,8 @@ namespace unfold {
 
 /// Per vertex and scale s: H smoothed by the implicit heat step
 /// (M + t W) h = M H with t = s^2 area, where H = <M^{-1} W V, n> is the
-/// signed mean curvature (positive where the surface is convex, n the
+/// signed sum of the principal curvatures, twice the mean curvature
+/// (positive where the surface is convex, n the
 /// outward area-weighted vertex normal; the orientation is taken from the
 /// signed volume, so inward-facing triangles give the same values), times
 /// sqrt(area) so that the values do not depend on the shape's size.
@@ -22,7 +23,6 @@ namespace unfold {
 ///         has no area at a vertex; NumericalError if a smoothing system
 ///         cannot be factored
 Eigen::MatrixXd mean_curvature_scales(const Eigen::MatrixX3d& V, const Eigen::MatrixX3i& F,
-                                      const std::vector<double>& scales = {0.01, 0.02, 0.04,
-                                                                           0.08});
+                                      const std::vector<double>& scales = {0.01, 0.02, 0.04, 0.08});
 
 }  // namespace unfold

@@ -137,14 +137,13 @@ void place_unsure_pairs(ShapeCache& cache, const MatchOptions& options, bool pro
     if (from == member.end() || to == member.end() || agreeing[from->second] < kAnchoringPairs ||
         agreeing[to->second] < kAnchoringPairs)
       continue;
-    const Eigen::Matrix3d implied =
-        sync.global[to->second].transpose() * sync.global[from->second];
+    const Eigen::Matrix3d implied = sync.global[to->second].transpose() * sync.global[from->second];
     const double degrees = degrees_between(implied, p.match.rotation);
     if (degrees < kReseatDegrees) continue;
     try {
       const auto start = std::chrono::steady_clock::now();
-      p.match = match_shapes(*cache.get(p.source).shape, *cache.get(p.target).shape, options,
-                             &implied);
+      p.match =
+          match_shapes(*cache.get(p.source).shape, *cache.get(p.target).shape, options, &implied);
       p.seconds += seconds_since(start);
     } catch (const Error& e) {
       p.error = e.what();
@@ -333,8 +332,7 @@ std::string format_match_summary(const MatchBatch& batch) {
       "collection); %d shapes prepared in %.1f s, rotations compared in %.1f s, "
       "matching %.2f s per pair; per pair with its shares %.2f s\n",
       ok, batch.pairs.size(), mirrored, ambiguous, unsure, placed, batch.shapes,
-      batch.seconds_shapes,
-      batch.seconds_synchronize, ok ? batch.seconds_pairs / ok : 0.0,
+      batch.seconds_shapes, batch.seconds_synchronize, ok ? batch.seconds_pairs / ok : 0.0,
       ok ? (batch.seconds_shapes + batch.seconds_synchronize + batch.seconds_pairs) / ok : 0.0);
   out << line;
   if (scored == 0) return out.str();
@@ -361,8 +359,8 @@ void write_match_csv(const std::string& path, const MatchBatch& batch) {
           p.error.empty() ? (p.evaluation_error.empty() ? "ok" : "not scored") : "failed";
       out << p.source << ',' << p.target << ',' << status << ',' << p.match.mirrored << ','
           << p.match.ambiguous << ',' << p.match.rotation_residual << ','
-          << p.match.mirrored_residual << ',' << p.match.placement_margin << ','
-          << p.match.sure << ',' << p.match.from_collection << ',' << p.seconds;
+          << p.match.mirrored_residual << ',' << p.match.placement_margin << ',' << p.match.sure
+          << ',' << p.match.from_collection << ',' << p.seconds;
       for (int s = 0; s < kMatchSteps; ++s) {
         if (p.strict.empty())
           out << ",,";

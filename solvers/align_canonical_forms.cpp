@@ -185,10 +185,9 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
           refine({half_turn * best.linear, half_turn * best.translation, 0, false});
       if (is_new(turned)) result.candidates.push_back(std::move(turned));
     }
-    std::stable_sort(result.candidates.begin() + long(first), result.candidates.end(),
-                     [](const FormAlignment& a, const FormAlignment& b) {
-                       return a.residual < b.residual;
-                     });
+    std::stable_sort(
+        result.candidates.begin() + long(first), result.candidates.end(),
+        [](const FormAlignment& a, const FormAlignment& b) { return a.residual < b.residual; });
   }
   if (rotation_seed) add_seeded_alignment(*rotation_seed, options, &result);
   return result;

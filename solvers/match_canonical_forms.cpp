@@ -1,11 +1,11 @@
 #include "solvers/match_canonical_forms.h"
 
 #include <algorithm>
-#include <utility>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "core/errors.h"
@@ -95,8 +95,8 @@ ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
   for (const FormAlignment& c : a.candidates) {
     const int side = c.mirrored;
     const bool better =
-        !best[side] || (c.seeded ? !best[side]->seeded
-                                 : !best[side]->seeded && c.residual < best[side]->residual);
+        !best[side] ||
+        (c.seeded ? !best[side]->seeded : !best[side]->seeded && c.residual < best[side]->residual);
     if (better) best[side] = &c;
     if (!c.seeded && (!best_fit || c.residual < best_fit->residual)) best_fit = &c;
   }
@@ -106,11 +106,11 @@ ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
   result.rotation_residual = best[0]->residual;
   result.mirrored_residual = best[1]->residual;
   const double ratio = best[1]->residual / best[0]->residual;
-  result.mirrored = options.mirror == "off" ? best_fit->mirrored : ratio < 1 - options.mirror_margin;
-  result.ambiguous = options.mirror != "off" && !result.mirrored &&
-                     ratio < 1 / (1 - options.mirror_margin);
-  const FormAlignment* chosen =
-      options.mirror == "off" ? best_fit : best[int(result.mirrored)];
+  result.mirrored =
+      options.mirror == "off" ? best_fit->mirrored : ratio < 1 - options.mirror_margin;
+  result.ambiguous =
+      options.mirror != "off" && !result.mirrored && ratio < 1 / (1 - options.mirror_margin);
+  const FormAlignment* chosen = options.mirror == "off" ? best_fit : best[int(result.mirrored)];
 
   // The placements of the chosen orientation, each refined on samples and
   // scored by the curvature descriptors its map disagrees with.
@@ -134,6 +134,7 @@ ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
     std::sort(upright.begin(), upright.end());
     if (upright.size() > 2) upright.resize(2);
     double first = std::numeric_limits<double>::infinity(), second = first;
+    std::vector<Eigen::VectorXi> refined;  // the sampled maps, to see whether they differ
     for (const auto& [unrefined, candidate] : upright) {
       const FormAlignment& c = *candidate;
       ++result.placements;
@@ -142,7 +143,8 @@ ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
       if (zoom) {
         C = zoomout_functional_map(source.basis, target.basis, tree.nearest_rows(c.moved),
                                    zoom_options);
-        score = disagreement(pointwise_map(source.basis, target.basis, C, rows));
+        refined.push_back(pointwise_map(source.basis, target.basis, C, rows));
+        score = disagreement(refined.back());
       }
       if (score < first) {
         second = first;
@@ -153,7 +155,19 @@ ShapeMatch match_shapes(const MatchShape& source, const MatchShape& target,
         second = std::min(second, score);
       }
     }
-    if (result.placements > 1) result.placement_margin = first > 0 ? second / first : 1.0;
+    // Two placements that ZoomOut takes to one map (images within 2 % of
+    // sqrt(area) of each other on average) leave nothing to decide.
+    bool same_map = false;
+    if (refined.size() == 2) {
+      double apart = 0;
+      for (Eigen::Index r = 0; r < refined[0].size(); ++r)
+        apart += (target.V.row(refined[0](r)) - target.V.row(refined[1](r))).norm();
+      same_map = apart / double(refined[0].size()) < 0.02 * std::sqrt(target.masses.sum());
+    }
+    if (result.placements > 1 && !same_map)
+      result.placement_margin = first > 0    ? second / first
+                                : second > 0 ? std::numeric_limits<double>::infinity()
+                                             : 1.0;
     result.sure = result.placement_margin >= options.sure_margin;
   }
   result.rotation = chosen->linear;

@@ -77,7 +77,8 @@ struct ShapeMatch {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   int placements = 0;  ///< placements of the chosen orientation compared (placement descriptor)
   /// the runner-up placement's curvature disagreement over the chosen one's
-  /// (>= 1; infinity when one placement was compared or the collection chose)
+  /// (>= 1; infinity when one placement was compared, when ZoomOut took both
+  /// to one map, or when the collection chose)
   double placement_margin = 0;
   bool sure = true;  ///< placement_margin >= match.sure_margin (or no choice to make)
   /// the rotation's placement came from the rotation seed (a collection's

@@ -85,8 +85,9 @@ Eigen::MatrixXd zoomout_functional_map(const LaplaceBeltramiBasis& source,
   }
 }
 
-Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
-                              const Eigen::MatrixXd& C, const std::vector<int>& rows) {
+Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source,
+                              const LaplaceBeltramiBasis& target, const Eigen::MatrixXd& C,
+                              const std::vector<int>& rows) {
   const Eigen::Index k = C.rows();
   if (C.cols() != k || k > source.phi.cols() || k > target.phi.cols())
     throw UsageError("pointwise_map: a functional map of " + std::to_string(k) + " x " +

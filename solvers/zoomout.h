@@ -42,8 +42,9 @@ Eigen::MatrixXd zoomout_functional_map(const LaplaceBeltramiBasis& source,
 /// vertices; empty: every vertex) the target vertex whose embedding
 /// Phi_t(j, :k) C^T is nearest to Phi_s(i, :k).
 /// @throws UsageError if C is larger than a basis or a row is out of range
-Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
-                              const Eigen::MatrixXd& C, const std::vector<int>& rows = {});
+Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source,
+                              const LaplaceBeltramiBasis& target, const Eigen::MatrixXd& C,
+                              const std::vector<int>& rows = {});
 
 /// The refined map, one target vertex per source vertex: pointwise_map of
 /// zoomout_functional_map on every source vertex.
