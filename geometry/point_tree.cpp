@@ -18,6 +18,8 @@ PointTree::PointTree(const Eigen::MatrixX3d& points) : points_(points) {
   for (int i = 0; i < int(order_.size()); ++i) order_[i] = i;
   nodes_.reserve(2 * order_.size() / kLeafSize + 2);
   build(0, int(order_.size()));
+  sorted_.resize(order_.size());
+  for (size_t k = 0; k < order_.size(); ++k) sorted_[k] = points_.row(order_[k]).transpose();
 }
 
 int PointTree::build(int begin, int end) {
@@ -49,10 +51,10 @@ void PointTree::search(int id, const Eigen::Vector3d& q, int* best, double* best
   const Node& node = nodes_[id];
   if (node.left < 0) {
     for (int k = node.begin; k < node.end; ++k) {
-      const double d2 = (points_.row(order_[k]).transpose() - q).squaredNorm();
+      const double d2 = (sorted_[size_t(k)] - q).squaredNorm();
       if (d2 < *best_d2) {
         *best_d2 = d2;
-        *best = order_[k];
+        *best = order_[size_t(k)];
       }
     }
     return;

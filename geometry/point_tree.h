@@ -36,6 +36,7 @@ class PointTree {
 
   Eigen::MatrixX3d points_;
   std::vector<int> order_;
+  std::vector<Eigen::Vector3d> sorted_;  ///< points_ in order_'s order: leaves read contiguously
   std::vector<Node> nodes_;
 };
 

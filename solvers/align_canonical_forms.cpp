@@ -31,18 +31,19 @@ struct IcpResult {
 };
 
 // ICP of S (already reflected if need be) onto T from (R, t), nearest points
-// both ways; the residual of the last placement.
-IcpResult icp(const Eigen::MatrixX3d& S, const Eigen::MatrixX3d& T, const PointTree& target_tree,
-              Eigen::Matrix3d R, Eigen::Vector3d t, int iterations) {
+// both ways (a target point's nearest in the moved source is its nearest in S
+// moved back: the trees are built once); the residual of the last placement.
+IcpResult icp(const Eigen::MatrixX3d& S, const PointTree& source_tree, const Eigen::MatrixX3d& T,
+              const PointTree& target_tree, Eigen::Matrix3d R, Eigen::Vector3d t, int iterations) {
   IcpResult result{R, t, std::numeric_limits<double>::infinity()};
   const Eigen::Index ns = S.rows(), nt = T.rows();
   Eigen::MatrixX3d from(ns + nt, 3), to(ns + nt, 3);
   for (int it = 0; it <= iterations; ++it) {
     const Eigen::MatrixX3d Y = (S * R.transpose()).rowwise() + t.transpose();
+    const Eigen::MatrixX3d T_back = (T.rowwise() - t.transpose()) * R;
     Eigen::VectorXd d_forward, d_backward;
     const Eigen::VectorXi forward = target_tree.nearest_rows(Y, &d_forward);
-    const PointTree moved_tree(Y);
-    const Eigen::VectorXi backward = moved_tree.nearest_rows(T, &d_backward);
+    const Eigen::VectorXi backward = source_tree.nearest_rows(T_back, &d_backward);
     const double residual = 0.5 * (d_forward.cwiseSqrt().mean() + d_backward.cwiseSqrt().mean());
     const double previous_best = result.residual;
     if (residual < result.residual) result = {R, t, residual};
@@ -93,10 +94,11 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
                                      const Eigen::MatrixX3i& target_F,
                                      const FormAlignmentOptions& options,
                                      const Eigen::Matrix3d* rotation_seed) {
-  if (options.coarse_points < 4 || options.coarse_iterations < 1 || options.iterations < 1 ||
-      options.keep < 1 || !(options.keep_ratio >= 1))
+  if (options.coarse_points < 4 || options.points < 4 || options.coarse_iterations < 1 ||
+      options.iterations < 1 || options.keep < 1 || !(options.keep_ratio >= 1))
     throw UsageError(
-        "align_canonical_forms: coarse_points must be >= 4, the iterations and keep >= 1, "
+        "align_canonical_forms: coarse_points and points must be >= 4, the iterations and keep >= "
+        "1, "
         "keep_ratio >= 1");
   FormAlignments result;
   result.source = unit_area_form(source_V, source_F);
@@ -110,7 +112,8 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
   const Eigen::MatrixX3d S_coarse = sample_rows(S, options.coarse_points);
   const Eigen::MatrixX3d T_coarse = sample_rows(T, options.coarse_points);
   const Eigen::MatrixX3d S_coarse_mirrored = S_coarse * X;
-  const PointTree coarse_tree(T_coarse);
+  const PointTree coarse_tree(T_coarse), source_coarse_tree(S_coarse),
+      source_coarse_mirrored_tree(S_coarse_mirrored);
 
   // Every signed permutation D: the source's axis k goes to the target's axis
   // perm[k] with sign s_k, linear = Et D Es^T.
@@ -135,27 +138,40 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
 #pragma omp parallel for schedule(dynamic)
   for (size_t k = 0; k < candidates.size(); ++k) {
     Candidate& c = candidates[k];
-    const IcpResult r = icp(c.mirrored ? S_coarse_mirrored : S_coarse, T_coarse, coarse_tree, c.R,
-                            c.t, options.coarse_iterations);
+    const IcpResult r = c.mirrored ? icp(S_coarse_mirrored, source_coarse_mirrored_tree, T_coarse,
+                                         coarse_tree, c.R, c.t, options.coarse_iterations)
+                                   : icp(S_coarse, source_coarse_tree, T_coarse, coarse_tree, c.R,
+                                         c.t, options.coarse_iterations);
     c.R = r.R;
     c.t = r.t;
     c.residual = r.residual;
   }
 
-  const PointTree tree(T);
-  const Eigen::MatrixX3d S_mirrored = S * X;
+  // The kept candidates are refined on `points` samples of each form.
+  const Eigen::MatrixX3d S_fine = sample_rows(S, options.points);
+  const Eigen::MatrixX3d T_fine = sample_rows(T, options.points);
+  const Eigen::MatrixX3d S_fine_mirrored = S_fine * X;
+  const PointTree tree(T_fine), source_tree(S_fine), source_mirrored_tree(S_fine_mirrored);
   std::sort(candidates.begin(), candidates.end(),
             [](const Candidate& a, const Candidate& b) { return a.residual < b.residual; });
-  // A placement refined on every vertex from a coarse one.
-  const auto refine = [&](const Candidate& c) {
-    const IcpResult r = icp(c.mirrored ? S_mirrored : S, T, tree, c.R, c.t, options.iterations);
-    FormAlignment out;
-    out.linear = c.mirrored ? Eigen::Matrix3d(r.R * X) : r.R;
-    out.translation = r.t;
-    out.residual = r.residual;
-    out.mirrored = c.mirrored;
-    out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
-    return out;
+  // Placements refined from coarse ones, in parallel.
+  const auto refine = [&](const std::vector<Candidate>& starts) {
+    std::vector<FormAlignment> refined(starts.size());
+#pragma omp parallel for schedule(dynamic)
+    for (size_t k = 0; k < starts.size(); ++k) {
+      const Candidate& c = starts[k];
+      const IcpResult r =
+          c.mirrored ? icp(S_fine_mirrored, source_mirrored_tree, T_fine, tree, c.R, c.t,
+                           options.iterations)
+                     : icp(S_fine, source_tree, T_fine, tree, c.R, c.t, options.iterations);
+      FormAlignment& out = refined[k];
+      out.linear = c.mirrored ? Eigen::Matrix3d(r.R * X) : r.R;
+      out.translation = r.t;
+      out.residual = r.residual;
+      out.mirrored = c.mirrored;
+      out.moved = (S * out.linear.transpose()).rowwise() + out.translation.transpose();
+    }
+    return refined;
   };
   // Two starts that ICP took to one placement count once.
   const auto is_new = [&](const FormAlignment& a) {
@@ -164,31 +180,38 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
         return false;
     return true;
   };
+  std::vector<Candidate> kept;  // of each orientation, the rotations first
+  size_t rotations = 0;
   for (const bool mirrored : {false, true}) {
-    std::vector<const Candidate*> kept;
+    const size_t first = kept.size();
     for (const Candidate& c : candidates) {
-      if (c.mirrored != mirrored || int(kept.size()) >= options.keep) continue;
-      if (!kept.empty() && c.residual > options.keep_ratio * kept.front()->residual) break;
+      if (c.mirrored != mirrored || kept.size() - first >= size_t(options.keep)) continue;
+      if (kept.size() > first && c.residual > options.keep_ratio * kept[first].residual) break;
       bool distinct = true;
-      for (const Candidate* k : kept)
-        distinct = distinct && ((k->R - c.R).norm() > 0.2 || (k->t - c.t).norm() > 0.05);
-      if (distinct) kept.push_back(&c);
+      for (size_t k = first; k < kept.size(); ++k)
+        distinct = distinct && ((kept[k].R - c.R).norm() > 0.2 || (kept[k].t - c.t).norm() > 0.05);
+      if (distinct) kept.push_back(c);
     }
-    const size_t first = result.candidates.size();
-    for (const Candidate* c : kept) result.candidates.push_back(refine(*c));
-    if (mirrored || !options.turns) continue;
-    const FormAlignment best = result.candidates[first];
+    if (!mirrored) rotations = kept.size();
+  }
+  std::vector<FormAlignment> refined = refine(kept);
+  for (size_t k = 0; k < rotations; ++k) result.candidates.push_back(std::move(refined[k]));
+  if (options.turns) {
+    const FormAlignment& best = result.candidates.front();
+    std::vector<Candidate> turns;
     for (int axis = 0; axis < 3; ++axis) {
       const Eigen::Vector3d e = Et.col(axis);
       const Eigen::Matrix3d half_turn = 2 * e * e.transpose() - Eigen::Matrix3d::Identity();
-      FormAlignment turned =
-          refine({half_turn * best.linear, half_turn * best.translation, 0, false});
-      if (is_new(turned)) result.candidates.push_back(std::move(turned));
+      turns.push_back({half_turn * best.linear, half_turn * best.translation, 0, false});
     }
+    for (FormAlignment& turned : refine(turns))
+      if (is_new(turned)) result.candidates.push_back(std::move(turned));
     std::stable_sort(
-        result.candidates.begin() + long(first), result.candidates.end(),
+        result.candidates.begin(), result.candidates.end(),
         [](const FormAlignment& a, const FormAlignment& b) { return a.residual < b.residual; });
   }
+  for (size_t k = rotations; k < refined.size(); ++k)
+    result.candidates.push_back(std::move(refined[k]));
   if (rotation_seed) add_seeded_alignment(*rotation_seed, options, &result);
   return result;
 }
@@ -199,7 +222,9 @@ void add_seeded_alignment(const Eigen::Matrix3d& rotation_seed, const FormAlignm
   if (aligned->source.rows() == 0 || aligned->target.rows() == 0)
     throw UsageError("add_seeded_alignment: the alignments hold no forms");
   const Eigen::MatrixX3d& S = aligned->source;
-  const IcpResult r = icp(S, aligned->target, PointTree(aligned->target), rotation_seed,
+  const Eigen::MatrixX3d S_fine = sample_rows(S, options.points);
+  const Eigen::MatrixX3d T_fine = sample_rows(aligned->target, options.points);
+  const IcpResult r = icp(S_fine, PointTree(S_fine), T_fine, PointTree(T_fine), rotation_seed,
                           Eigen::Vector3d::Zero(), options.iterations);
   FormAlignment out;
   out.linear = r.R;

@@ -12,7 +12,10 @@ namespace unfold {
 struct FormAlignmentOptions {
   int coarse_points = 400;     ///< points per form while every candidate frame is tried
   int coarse_iterations = 12;  ///< ICP iterations per candidate frame
-  int iterations = 30;         ///< ICP iterations of each kept candidate, on every vertex
+  int iterations = 30;         ///< ICP iterations of each kept candidate
+  /// points per form while the kept candidates are refined (every vertex when
+  /// fewer): a placement's residual is a mean, which samples estimate well
+  int points = 2000;
   /// candidates kept per orientation: the distinct placements whose coarse
   /// residual is within `keep_ratio` times the best of their orientation, at most `keep`
   int keep = 1;
@@ -56,16 +59,17 @@ Eigen::MatrixX3d unit_area_form(const Eigen::MatrixX3d& V, const Eigen::MatrixX3
 /// mirrored) refined by ICP on `coarse_points` points of each form; per
 /// orientation the distinct ones that fit nearly as well as the best (`keep`,
 /// `keep_ratio`: a body's front and back can fit about alike, which only
-/// intrinsic cues tell apart) refined on every vertex, ICP with nearest points
-/// both ways (so neither form's extra parts are ignored); with `turns`, the
+/// intrinsic cues tell apart) refined on `points` points of each form, ICP
+/// with nearest points both ways (so neither form's extra parts are ignored),
+/// in parallel; with `turns`, the
 /// best rotation's three half turns about the target's axes refined the same
 /// way, those that ICP does not take onto a placement kept already.
 /// @param source_V, source_F the source's canonical form (n x 3, triangles)
 /// @param target_V, target_F the target's canonical form
 /// @param rotation_seed if given, a rotation of the unit-area forms from
 ///        elsewhere (a collection's synchronized rotations): one more
-///        candidate, ICP on every vertex from it, `seeded`
-/// @throws UsageError for options out of range (coarse_points < 4, iterations < 1);
+///        candidate, ICP from it, `seeded`
+/// @throws UsageError for options out of range (coarse_points or points < 4, iterations < 1);
 ///         InputError if a form has no area
 FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
                                      const Eigen::MatrixX3i& source_F,
@@ -75,7 +79,7 @@ FormAlignments align_canonical_forms(const Eigen::MatrixX3d& source_V,
                                      const Eigen::Matrix3d* rotation_seed = nullptr);
 
 /// Adds to `aligned` (of align_canonical_forms, whose forms it uses) the
-/// placement refined by ICP on every vertex from `rotation_seed`, `seeded`:
+/// placement refined by ICP (on `points` points) from `rotation_seed`, `seeded`:
 /// what align_canonical_forms' rotation_seed adds, for alignments made before
 /// the seed was known (a collection's synchronization).
 /// @throws UsageError for options out of range or `aligned` without forms

@@ -5,27 +5,9 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "geometry/nearest_rows_brute_force.h"
 
 namespace unfold {
-
-Eigen::VectorXi nearest_rows_brute_force(const Eigen::MatrixXf& queries,
-                                         const Eigen::MatrixXf& database) {
-  if (queries.cols() != database.cols() || database.rows() == 0)
-    throw UsageError("nearest_rows_brute_force: need a non-empty database of the queries' width");
-  const Eigen::VectorXf database_norms = database.rowwise().squaredNorm();
-  Eigen::VectorXi nearest(queries.rows());
-  constexpr Eigen::Index kBlock = 512;
-  const Eigen::Index blocks = (queries.rows() + kBlock - 1) / kBlock;
-#pragma omp parallel for schedule(dynamic)
-  for (Eigen::Index b = 0; b < blocks; ++b) {
-    const Eigen::Index begin = b * kBlock, rows = std::min(kBlock, queries.rows() - begin);
-    // |q - d|^2 - |q|^2 = |d|^2 - 2 q.d: the same argmin.
-    Eigen::MatrixXf scores = -2.0f * (queries.middleRows(begin, rows) * database.transpose());
-    scores.rowwise() += database_norms.transpose();
-    for (Eigen::Index i = 0; i < rows; ++i) scores.row(i).minCoeff(&nearest(begin + i));
-  }
-  return nearest;
-}
 
 namespace {
 

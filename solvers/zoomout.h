@@ -52,11 +52,4 @@ Eigen::VectorXi pointwise_map(const LaplaceBeltramiBasis& source,
 Eigen::VectorXi zoomout(const LaplaceBeltramiBasis& source, const LaplaceBeltramiBasis& target,
                         const Eigen::VectorXi& initial, const ZoomOutOptions& options = {});
 
-/// The nearest row of `database` for every row of `queries` (Euclidean, brute
-/// force by blocked matrix products: for the tens of dimensions of a spectral
-/// embedding, where trees do not help).
-/// @throws UsageError if the column counts differ or database is empty
-Eigen::VectorXi nearest_rows_brute_force(const Eigen::MatrixXf& queries,
-                                         const Eigen::MatrixXf& database);
-
 }  // namespace unfold
