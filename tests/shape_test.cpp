@@ -24,10 +24,13 @@
 
 namespace unfold {
 
-// Test names show a stored surface by resolution (found by argument-dependent
-// lookup: outside the anonymous namespace).
-void PrintTo(const StoredRestSurface& stored, std::ostream* out) {
-  *out << (stored.mouth ? "mouth " : "") << stored.resolution;
+// A stored surface as test names show it: 48, mouth_48 (PrintTo: gtest's
+// printer, found by argument-dependent lookup outside the anonymous namespace).
+static std::string stored_name(const StoredRestSurface& stored) {
+  return (stored.mouth ? "mouth_" : "") + std::to_string(stored.resolution);
+}
+static void PrintTo(const StoredRestSurface& stored, std::ostream* out) {
+  *out << stored_name(stored);
 }
 
 namespace {
@@ -203,8 +206,7 @@ TEST(ShapeApp, BadFlagsExitWithTwo) {
 
 // The file a stored rest surface is read from.
 std::string rest_surface_file(const StoredRestSurface& stored) {
-  return std::string("articulated_rest_surface_") + (stored.mouth ? "mouth_" : "") +
-         std::to_string(stored.resolution) + ".inc";
+  return "articulated_rest_surface_" + stored_name(stored) + ".inc";
 }
 
 // articulated_rest_surface_*.inc's text for `mesh`: each coordinate's bits, so
@@ -263,10 +265,7 @@ TEST_P(StoredRestSurfaces, AreTheMeshedOnes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, StoredRestSurfaces, ::testing::ValuesIn(stored_rest_surfaces()),
-                         [](const ::testing::TestParamInfo<StoredRestSurface>& info) {
-                           return (info.param.mouth ? "mouth_" : "") +
-                                  std::to_string(info.param.resolution);
-                         });
+                         [](const auto& info) { return stored_name(info.param); });
 
 TEST(ShapeMake, RejectsBadParameters) {
   EXPECT_THROW(make_articulated_shape(ShapePose::rest(), 15), UsageError);
