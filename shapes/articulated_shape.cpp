@@ -209,30 +209,73 @@ RestGrid rest_grid(const std::vector<Capsule>& parts, int resolution) {
   return grid;
 }
 
-// The copy of mesh_articulated_rest_surface(kDefaultShapeResolution) stored
-// in articulated_rest_surface_64.inc.
-SurfaceMesh stored_rest_surface() {
-  static_assert(kDefaultShapeResolution == 64, "the stored rest surface is that of resolution 64");
-#include "shapes/articulated_rest_surface_64.inc"
+// A rest surface stored in shapes/articulated_rest_surface_*.inc: each
+// coordinate's bits, then the triangles.
+template <size_t NumCoordinates, size_t NumCorners>
+SurfaceMesh stored_surface(const uint64_t (&vertex_bits)[NumCoordinates],
+                           const int (&triangles)[NumCorners]) {
   SurfaceMesh mesh;
-  const size_t n = std::size(kRestVertexBits) / 3;
-  mesh.V.resize(Eigen::Index(n), 3);
-  for (size_t k = 0; k < 3 * n; ++k) {
+  mesh.V.resize(Eigen::Index(NumCoordinates / 3), 3);
+  for (size_t k = 0; k < NumCoordinates; ++k) {
     double x;
-    std::memcpy(&x, &kRestVertexBits[k], sizeof x);
+    std::memcpy(&x, &vertex_bits[k], sizeof x);
     mesh.V(Eigen::Index(k / 3), Eigen::Index(k % 3)) = x;
   }
-  for (size_t k = 0; k < std::size(kRestTriangles); k += 3)
-    mesh.faces.push_back({kRestTriangles[k], kRestTriangles[k + 1], kRestTriangles[k + 2]});
+  for (size_t k = 0; k < NumCorners; k += 3)
+    mesh.faces.push_back({triangles[k], triangles[k + 1], triangles[k + 2]});
   return mesh;
 }
+
+// One function a file: each file's arrays have the same names.
+SurfaceMesh stored_16() {
+#include "shapes/articulated_rest_surface_16.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+SurfaceMesh stored_20() {
+#include "shapes/articulated_rest_surface_20.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+SurfaceMesh stored_24() {
+#include "shapes/articulated_rest_surface_24.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+SurfaceMesh stored_32() {
+#include "shapes/articulated_rest_surface_32.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+SurfaceMesh stored_40() {
+#include "shapes/articulated_rest_surface_40.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+SurfaceMesh stored_64() {
+  static_assert(kDefaultShapeResolution == 64, "the default's rest surface is stored");
+#include "shapes/articulated_rest_surface_64.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+SurfaceMesh stored_mouth_48() {
+#include "shapes/articulated_rest_surface_mouth_48.inc"
+  return stored_surface(kRestVertexBits, kRestTriangles);
+}
+
+struct StoredSurface {
+  StoredRestSurface key;
+  SurfaceMesh (*mesh)();
+};
+const StoredSurface kStoredSurfaces[] = {
+    {{16, false}, stored_16},      {{20, false}, stored_20}, {{24, false}, stored_24},
+    {{32, false}, stored_32},      {{40, false}, stored_40}, {{64, false}, stored_64},
+    {{48, true}, stored_mouth_48},
+};
 
 RestShape build_rest_shape(int resolution, bool mouth) {
   const std::vector<Capsule> parts = capsules(mouth);
   const double edge = rest_grid(parts, resolution).edge;
   RestShape rest;
-  rest.mesh = resolution == kDefaultShapeResolution && !mouth
-                  ? stored_rest_surface()
+  const auto stored = std::find_if(
+      std::begin(kStoredSurfaces), std::end(kStoredSurfaces),
+      [&](const auto& s) { return s.key.resolution == resolution && s.key.mouth == mouth; });
+  rest.mesh = stored != std::end(kStoredSurfaces)
+                  ? stored->mesh()
                   : mesh_articulated_rest_surface(resolution, mouth);
   const int n = int(rest.mesh.V.rows());
 
@@ -310,6 +353,12 @@ SurfaceMesh mesh_articulated_rest_surface(int resolution, bool mouth) {
   // The thinnest part (tail tip, radius 0.07) needs a few grid cells across.
   const double spacing = std::min(grid.edge / 2.5, 0.028);
   return mesh_implicit_surface(field, grid.box, grid.edge, spacing);
+}
+
+std::vector<StoredRestSurface> stored_rest_surfaces() {
+  std::vector<StoredRestSurface> keys;
+  for (const StoredSurface& s : kStoredSurfaces) keys.push_back(s.key);
+  return keys;
 }
 
 ShapePose ShapePose::rest() { return ShapePose(); }

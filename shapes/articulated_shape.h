@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "mesh/surface_mesh.h"
 
@@ -77,18 +78,30 @@ struct ShapePose {
 constexpr int kDefaultShapeResolution = 64;
 
 /// The rest shape's surface, meshed from its implicit field (a smooth union
-/// of tapered capsules): seconds of work, so make_articulated_shape uses a
-/// stored copy at kDefaultShapeResolution (articulated_rest_surface_64.inc,
-/// checked against this by tests/shape_test.cpp, which also regenerates it).
-/// With `mouth`, the rest surface of the head with a mouth (ShapePose::mouth),
-/// never stored: meshed on first use and cached by make_articulated_shape.
+/// of tapered capsules): seconds of work at any resolution (the field is
+/// sampled finer than the thinnest limb, then decimated), so make_articulated_shape
+/// uses a stored copy where there is one (stored_rest_surfaces()).
+/// With `mouth`, the rest surface of the head with a mouth (ShapePose::mouth).
 /// @throws UsageError for a resolution out of [16, 128]
 SurfaceMesh mesh_articulated_rest_surface(int resolution, bool mouth = false);
 
+/// A rest surface make_articulated_shape does not mesh but reads, bit for bit
+/// mesh_articulated_rest_surface(resolution, mouth), from
+/// shapes/articulated_rest_surface_[mouth_]<resolution>.inc (checked against it
+/// by tests/shape_test.cpp, which also regenerates the file).
+struct StoredRestSurface {
+  int resolution;
+  bool mouth;
+};
+
+/// The stored rest surfaces: the default resolution's and those the tests use,
+/// so that a test process does not spend seconds meshing.
+std::vector<StoredRestSurface> stored_rest_surfaces();
+
 /// The animal in `pose`: a closed, 2-manifold, single-component, outward
 /// oriented triangle mesh. The rest shape is a smooth union of tapered capsules
-/// meshed once per resolution (mesh_articulated_rest_surface; stored at the
-/// default resolution, cached for others: later poses are cheap); poses are obtained by skinning
+/// meshed once per resolution (mesh_articulated_rest_surface; read where stored,
+/// cached for others: later poses are cheap); poses are obtained by skinning
 /// (each vertex is rotated about the joints of its skeleton chain by a fraction of each joint
 /// angle, fractions blended smoothly across joints), so connectivity and vertex
 /// order never depend on the pose. Self-intersection free for the rest pose and

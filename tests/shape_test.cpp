@@ -23,6 +23,16 @@
 #include "test_meshes.h"
 
 namespace unfold {
+
+// A stored surface as test names show it: 48, mouth_48 (PrintTo: gtest's
+// printer, found by argument-dependent lookup outside the anonymous namespace).
+static std::string stored_name(const StoredRestSurface& stored) {
+  return (stored.mouth ? "mouth_" : "") + std::to_string(stored.resolution);
+}
+static void PrintTo(const StoredRestSurface& stored, std::ostream* out) {
+  *out << stored_name(stored);
+}
+
 namespace {
 
 // Rest pose first, then the presets; built once for the whole suite.
@@ -174,7 +184,9 @@ int run_app(const std::string& args) {
 }
 
 TEST(ShapeApp, WritesTheSameOffInSeparateRuns) {
-  // Separate processes rebuild the shape from scratch: checks determinism.
+  // Separate processes make the shape again: checks determinism. (Its rest
+  // surface is stored; that meshing it gives the stored bits in any process is
+  // StoredRestSurfaces.AreTheMeshedOnes'.)
   const std::string dir = ::testing::TempDir();
   ASSERT_EQ(run_app("--pose 1 --resolution 24 --output " + dir + "shape_a.off"), 0);
   ASSERT_EQ(run_app("--pose 1 --resolution 24 --output " + dir + "shape_b.off"), 0);
@@ -192,13 +204,22 @@ TEST(ShapeApp, BadFlagsExitWithTwo) {
   EXPECT_EQ(run_app("--no_such_flag" + out), 2);
 }
 
-// articulated_rest_surface_64.inc's text for `mesh`: each coordinate's bits, so
+// The file a stored rest surface is read from.
+std::string rest_surface_file(const StoredRestSurface& stored) {
+  return "articulated_rest_surface_" + stored_name(stored) + ".inc";
+}
+
+// articulated_rest_surface_*.inc's text for `mesh`: each coordinate's bits, so
 // the stored copy is bit for bit the meshed one.
-std::string rest_surface_source(const SurfaceMesh& mesh) {
+std::string rest_surface_source(const SurfaceMesh& mesh, const StoredRestSurface& stored) {
+  const std::string resolution = std::to_string(stored.resolution);
   std::ostringstream out;
-  out << "// The demo shape's rest surface at resolution 64: mesh_articulated_rest_surface(64),\n"
+  out << "// The demo shape's rest surface" << (stored.mouth ? " with the mouth" : "")
+      << " at resolution " << resolution << ": mesh_articulated_rest_surface(" << resolution
+      << (stored.mouth ? ", true" : "")
+      << "),\n"
          "// stored because meshing takes seconds. Written by tests/shape_test.cpp\n"
-         "// (ShapeMake.StoredRestSurfaceIsTheMeshedOne) when it differs: do not edit.\n"
+         "// (StoredRestSurfaces.AreTheMeshedOnes) when it differs: do not edit.\n"
          "// clang-format off\n"
          "static constexpr uint64_t kRestVertexBits[] = {  // x, y, z of each vertex\n";
   out << std::hex << std::setfill('0');
@@ -220,22 +241,31 @@ std::string rest_surface_source(const SurfaceMesh& mesh) {
   return out.str();
 }
 
-TEST(ShapeMake, StoredRestSurfaceIsTheMeshedOne) {
-  const SurfaceMesh meshed = mesh_articulated_rest_surface(kDefaultShapeResolution);
-  const std::string stored_path = UNFOLD_SOURCE_DIR "/shapes/articulated_rest_surface_64.inc";
-  const std::string fresh_path = ::testing::TempDir() + "articulated_rest_surface_64.inc";
-  const std::string fresh = rest_surface_source(meshed);
+// One test a stored surface, each meshing it in a process of its own (seconds each).
+class StoredRestSurfaces : public ::testing::TestWithParam<StoredRestSurface> {};
+
+TEST_P(StoredRestSurfaces, AreTheMeshedOnes) {
+  const StoredRestSurface stored = GetParam();
+  const SurfaceMesh meshed = mesh_articulated_rest_surface(stored.resolution, stored.mouth);
+  const std::string file = rest_surface_file(stored);
+  const std::string stored_path = UNFOLD_SOURCE_DIR "/shapes/" + file;
+  const std::string fresh_path = ::testing::TempDir() + file;
+  const std::string fresh = rest_surface_source(meshed, stored);
   const bool same = read_file(stored_path) == fresh;
   if (!same) std::ofstream(fresh_path) << fresh;
   EXPECT_TRUE(same) << "the stored rest surface is not what the code meshes; if the change is "
                        "meant: cp "
                     << fresh_path << " " << stored_path;
   // And the shape made from it is the meshed surface, skinned.
-  const SurfaceMesh rest = make_articulated_shape(ShapePose::rest());
-  EXPECT_EQ(rest.faces, meshed.faces);
-  ASSERT_EQ(rest.V.rows(), meshed.V.rows());
-  EXPECT_LT((rest.V - meshed.V).cwiseAbs().maxCoeff(), 1e-12);
+  const ShapePose rest = stored.mouth ? ShapePose::open_mouth() : ShapePose::rest();
+  const SurfaceMesh made = make_articulated_shape(rest, stored.resolution);
+  EXPECT_EQ(made.faces, meshed.faces);
+  ASSERT_EQ(made.V.rows(), meshed.V.rows());
+  EXPECT_LT((made.V - meshed.V).cwiseAbs().maxCoeff(), 1e-12);
 }
+
+INSTANTIATE_TEST_SUITE_P(Shapes, StoredRestSurfaces, ::testing::ValuesIn(stored_rest_surfaces()),
+                         [](const auto& info) { return stored_name(info.param); });
 
 TEST(ShapeMake, RejectsBadParameters) {
   EXPECT_THROW(make_articulated_shape(ShapePose::rest(), 15), UsageError);

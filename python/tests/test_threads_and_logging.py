@@ -5,11 +5,26 @@ import logging
 import threading
 import time
 
+import numpy as np
+
 import unfold
 
 
+def subdivided(V, F):
+    """Each triangle cut into four at its edges' midpoints: the same surface, four times the
+    triangles."""
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    unique, index = np.unique(edges, axis=0, return_inverse=True)
+    ab, bc, ca = len(V) + index.reshape(3, -1)
+    a, b, c = F.T
+    faces = [np.c_[a, ab, ca], np.c_[ab, b, bc], np.c_[ca, bc, c], np.c_[ab, bc, ca]]
+    return np.vstack([V, V[unique].mean(axis=1)]), np.vstack(faces)
+
+
 def test_another_thread_runs_python_during_a_solve():
-    V, F = unfold.demo_shape("1", resolution=110)  # long enough a solve to tell, even idle
+    # Long enough a solve to tell, even idle: about 16,000 vertices, from the stored
+    # default shape (meshing one that fine would take seconds more than the solve).
+    V, F = subdivided(*unfold.demo_shape("1"))
     done = threading.Event()
     solver = threading.Thread(target=lambda: (unfold.unfold(V, F), done.set()))
     start = time.perf_counter()
