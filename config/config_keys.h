@@ -14,6 +14,10 @@
     "domain surface: solve the surface stages on clusters of the surface's vertices this many "    \
     "edges across (1: about a quarter of the vertices, 2: a tenth) and carry the solution to the " \
     "whole surface; 0 solves on the whole surface")                                                \
+  X(surface_solve_vertices, "simplify.surface_solve_vertices", surface_solve_vertices,             \
+    "domain surface with surface_solve_hops 0: a surface of more vertices than this is solved on " \
+    "clusters, the fewest edges across that leave at most this many (faster, and more "            \
+    "pose-invariant on large scans: docs/performance.md); 0: the whole surface at any size")       \
   X(tet_route, "tetrahedralize.route", tet.route,                                                  \
     "tetrahedralization route: auto (conforming unless the surface intersects itself, else "       \
     "robust), conforming, robust")                                                                 \

@@ -169,6 +169,7 @@ EnergyTerms probe_terms(EnergyOptions options) {
 
 Options::Options() {
   domain = "surface";
+  surface_solve_vertices = 60000;
   tet_shape = "auto";
   beta_value = 1.25;
   cascade.num_cascades = 1;  // one beta, solved to convergence
@@ -264,6 +265,8 @@ void validate_options(const Options& o) {
           "must be 0 (keep all) or at least 4");
   require(o.surface_solve_hops >= 0, "simplify.surface_solve_hops",
           "must be 0 (the whole surface) or a positive number of edges");
+  require(o.surface_solve_vertices == 0 || o.surface_solve_vertices >= 100,
+          "simplify.surface_solve_vertices", "must be 0 (no limit) or at least 100");
   require(o.tet.route == "auto" || o.tet.route == "conforming" || o.tet.route == "robust",
           "tetrahedralize.route", "must be auto, conforming or robust, got '" + o.tet.route + "'");
   require(o.tet.quality == 0 || (o.tet.quality >= 1.0 && std::isfinite(o.tet.quality)),

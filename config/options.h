@@ -36,6 +36,9 @@ struct Options {
   std::string method = "local_global";
   int target_vertices = 0;
   int surface_solve_hops = 0;  ///< simplify.surface_solve_hops: the surface solved on clusters
+  /// simplify.surface_solve_vertices: with surface_solve_hops 0, a larger
+  /// surface solved on clusters, the fewest edges across that leave at most this many
+  int surface_solve_vertices = 0;
   TetOptions tet;
   bool fallback_surface_graph = false;  ///< no tet mesh possible: unfold the surface edge graph
   std::string components = "refuse";    ///< several components: "refuse" or "separately"

@@ -38,6 +38,16 @@ namespace {
 
 // simplify.surface_solve_hops: fewer clusters than this leave no shape to solve.
 constexpr int kFewestClusters = 8;
+// simplify.surface_solve_vertices: clusters at most this many edges across.
+constexpr int kMostAutomaticHops = 8;
+
+// A large surface to solve on clusters (simplify.surface_solve_vertices); not
+// with user pairs, which name the whole surface's vertices.
+bool exceeds_surface_solve_vertices(const UnfoldState& s) {
+  return s.options.surface_solve_hops == 0 && s.options.surface_solve_vertices > 0 &&
+         s.mesh.surface.V.rows() > s.options.surface_solve_vertices &&
+         s.options.energy.user_pairs_file.empty();
+}
 
 Stage step(std::string name, std::function<void(UnfoldState&)> run,
            StagePart part = StagePart::unfold, StageTimer timer = StageTimer::none) {
@@ -248,14 +258,22 @@ Stage lambda2_and_beta(CascadeDomain domain) {
       [domain, surface](UnfoldState& s) {
         if (surface && s.options.surface_solve_hops > 0) {
           s.coarsening = coarsen_surface(s.mesh.surface, s.options.surface_solve_hops);
-          if (s.coarsening.V.rows() < kFewestClusters) {
-            s.result.warnings.push_back(
-                "simplify.surface_solve_hops: " + std::to_string(s.options.surface_solve_hops) +
-                " edges leave " + std::to_string(s.coarsening.V.rows()) +
-                " clusters; the surface is solved whole");
-            LOG(WARNING) << s.result.warnings.back();
-            s.coarsening = SurfaceCoarsening{};
+        } else if (surface && exceeds_surface_solve_vertices(s)) {
+          // Clusters by connectivity alone, so every pose of a mesh gets the same ones.
+          for (int hops = 1; hops <= kMostAutomaticHops; ++hops) {
+            s.coarsening = coarsen_surface(s.mesh.surface, hops);
+            if (s.coarsening.V.rows() <= s.options.surface_solve_vertices) break;
           }
+          LOG(INFO) << "simplify.surface_solve_vertices: " << s.mesh.surface.V.rows()
+                    << " surface vertices, above " << s.options.surface_solve_vertices;
+        }
+        if (s.coarsening.V.rows() > 0 && s.coarsening.V.rows() < kFewestClusters) {
+          s.result.warnings.push_back(
+              "the surface's clusters (simplify.surface_solve_hops, "
+              "surface_solve_vertices) are " +
+              std::to_string(s.coarsening.V.rows()) + "; the surface is solved whole");
+          LOG(WARNING) << s.result.warnings.back();
+          s.coarsening = SurfaceCoarsening{};
         }
         if (surface && coarse_surface_solve(s)) {  // on a coarse graph of the surface
           s.cascade_mesh = TetMesh{s.coarsening.V, Eigen::MatrixX4i(), int(s.coarsening.V.rows())};

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/errors.h"
+#include "mesh/coarsen_surface.h"
 #include "mesh/read_surface_mesh.h"
 #include "metrics/rigid_alignment.h"
 #include "pipeline/unfold_surface.h"
@@ -122,6 +123,34 @@ TEST(PipelinePose, ACoarseSurfaceSolveGivesNearlyOneCanonicalForm) {
   Options options = config("default.yaml");
   options.surface_solve_hops = 1;
   expect_nearly_one_canonical_form(options, "default.yaml, surface_solve_hops", presets(), 0.02);
+}
+
+// simplify.surface_solve_vertices: a surface above the limit is solved on the
+// clusters of the fewest hops that leave at most that many, exactly as
+// surface_solve_hops would; at or below it, on the whole surface.
+TEST(PipelineSurfaceDomain, SurfaceSolveVerticesPicksTheFewestHopsUnderTheLimit) {
+  const SurfaceMesh shape = make_articulated_shape(ShapePose::preset(1), 40);
+  Options base = config("default.yaml");
+  base.metrics.clear();
+  const auto canonical = [&](int hops, int limit) {
+    Options options = base;
+    options.surface_solve_hops = hops;
+    options.surface_solve_vertices = limit;
+    return unfold_surface(shape, options).canonical.V;
+  };
+  const int n = int(shape.V.rows());
+  const int one_hop = int(coarsen_surface(shape, 1).V.rows());
+  ASSERT_LT(one_hop, n / 2);
+  ASSERT_GE(one_hop, 101);  // the smallest limit allowed is 100
+  const Eigen::MatrixX3d whole = canonical(0, 0);
+  EXPECT_EQ(canonical(0, n), whole);
+  const Eigen::MatrixX3d hops1 = canonical(1, 0);
+  EXPECT_NE(hops1, whole);
+  EXPECT_EQ(canonical(0, one_hop), hops1);
+  EXPECT_EQ(canonical(0, one_hop - 1), canonical(2, 0));
+  Options bad = base;
+  bad.surface_solve_vertices = 99;
+  EXPECT_THROW(validate_options(bad), UsageError);
 }
 
 // Crossed legs pass through each other: shape contact decides on the contact
