@@ -99,8 +99,8 @@ int plot(const std::string& csv, const std::string& png) {
   }
   write_png(png, plot_scaling(n,
                               {{"whole run", total},
-                               {"lambda_2 + cascade", unfold},
-                               {"tetrahedralize", tet},
+                               {"unfolding (tets of the default)", unfold},
+                               {"tets", tet},
                                {"metrics", metrics}},
                               memory));
   return 0;
