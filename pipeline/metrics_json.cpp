@@ -97,6 +97,8 @@ Json metrics_document(const UnfoldResult& r, const Options& options) {
       {"seconds_interior", r.seconds_interior},
       {"seconds_integration", r.seconds_integration},
       {"seconds_anchored", r.seconds_anchored},
+      {"anchored_steps", r.anchored_steps},
+      {"anchored_converged", r.anchored_converged},
       {"seconds_metrics", m.seconds},
       {"stages", stages},
       {"method", options.method},

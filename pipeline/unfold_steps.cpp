@@ -469,7 +469,10 @@ Stage anchored() {
       [](UnfoldState& s) {
         const Eigen::MatrixX3d& P = s.mesh.tets.V;
         CascadeResult& c = s.result.cascade;
-        c.positions = anchored_steps(s.edges.graph, P, std::move(s.integrated));
+        ArapSolveReport steps;
+        c.positions = anchored_steps(s.edges.graph, P, std::move(s.integrated), &steps);
+        s.result.anchored_steps = steps.steps;
+        s.result.anchored_converged = steps.converged;
         c.edge_ratio = edge_ratio(s.edges.graph, P, c.positions);
         c.reached_band = in_band(c.edge_ratio, s.options.cascade.edge_ratio_band);
       },

@@ -105,6 +105,10 @@ struct UnfoldResult {
   double seconds_interior = 0;     ///< domain: surface: the interior placed by ARAP
   double seconds_integration = 0;  ///< integrate: the rotation field integrated (one step)
   double seconds_anchored = 0;     ///< integrate: the anchored ARAP steps after it
+  int anchored_steps = 0;  ///< integrate: the anchored steps taken (several components: most)
+  /// integrate: the anchored steps stopped by their tolerance (or when a step no
+  /// longer lowered their energy), not by integrate.iterations; true when none ran
+  bool anchored_converged = true;
   std::vector<std::string> warnings;
   /// every stage run, the preparation's included, in order; the seconds_* fields
   /// above are sums of these (pipeline/run_stages.h)

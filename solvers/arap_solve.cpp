@@ -149,7 +149,8 @@ Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX
 }
 
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
-                            const ArapSolveOptions& options, const SparseLdlt* factor) {
+                            const ArapSolveOptions& options, const SparseLdlt* factor,
+                            ArapSolveReport* report) {
   const int n = graph.num_vertices, num_fixed = options.num_fixed, m = n - num_fixed;
   if (P.rows() != n || Q.rows() != n || num_fixed < 1 || num_fixed > n)
     throw UsageError("arap_solve: need P and Q with one row per graph vertex and 1 to n held");
@@ -157,6 +158,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       options.anderson < 0)
     throw UsageError("arap_solve: max_iterations, tolerance, anchor and anderson must be >= 0");
   check_edge_factors(graph, options, "arap_solve");
+  if (report) *report = {};
   if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
   report_stage("ARAP steps, " + std::to_string(m) + " free vertices" +
                (options.anchor > 0 ? ", anchored" : ""));
@@ -274,6 +276,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   // The steps' right side, solution, start and extrapolation: storage reused.
   Eigen::MatrixX3d rhs, free, x, extrapolated;
   int it = 0;
+  bool converged = false;
   while (it < options.max_iterations) {
     ++it;
     report_step(it, options.max_iterations);
@@ -294,7 +297,8 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
         plain = true;
       }
     }
-    const bool last = step <= options.tolerance * radius || it == options.max_iterations;
+    converged = step <= options.tolerance * radius;
+    const bool last = converged || it == options.max_iterations;
     if (plain) {
       Q.bottomRows(m) = free;
       if (last) break;  // no rotations needed after it
@@ -303,12 +307,14 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       // rounding lets it tell; keep the lower iterate.
       if (!(energy < level)) {
         Q.bottomRows(m) = x;
+        converged = true;
         break;
       }
     }
     level = energy;
     if (last) break;
   }
+  if (report) *report = {it, converged};
   report_detail([&](std::ostream& line) {
     line << "ARAP: " << it << " steps, " << m << " free vertices, anchor " << options.anchor
          << ", Anderson " << options.anderson << ", energy " << level;

@@ -49,6 +49,14 @@ struct ArapSolveOptions {
   bool anchor_by_stiffness = false;
 };
 
+/// What arap_solve's steps did.
+struct ArapSolveReport {
+  int steps = 0;  ///< local-global steps taken
+  /// true: stopped by the tolerance or because a step no longer lowered the
+  /// energy; false: by max_iterations (or there was no step to take)
+  bool converged = false;
+};
+
 /// Per free vertex (rows num_fixed and up, in order), the weight a_i of its
 /// anchor term a_i |q_i - q_i^start|^2: options.anchor, or with
 /// options.anchor_by_stiffness options.anchor k_i / mean k (k as there; every k
@@ -81,6 +89,7 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
 /// @param Q     n x 3: held rows and the free rows' start (and anchor)
 /// @param factor arap_factorization(graph, P, options) made already, or null
 ///        (then it is made here, when there is a step to take)
+/// @param report optional: the steps taken and whether they converged
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
 ///         max_iterations < 0, tolerance < 0, anchor < 0 or anderson < 0, or
 ///         edge_factors are not one finite factor > 0 per edge
@@ -88,6 +97,6 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
 ///         only when there is a step to take: max_iterations > 0)
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
                             const ArapSolveOptions& options = {},
-                            const SparseLdlt* factor = nullptr);
+                            const SparseLdlt* factor = nullptr, ArapSolveReport* report = nullptr);
 
 }  // namespace unfold

@@ -58,8 +58,9 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
 }
 
 Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                IntegratedRotations integrated) {
+                                IntegratedRotations integrated, ArapSolveReport* report) {
   Eigen::MatrixX3d X = std::move(integrated.positions);
+  if (report) *report = {0, true};
   if (integrated.anchored.max_iterations >= 0) {  // iterations > 0: integrated
     const std::unique_ptr<SparseLdlt> factor =
         integrated.anchored_factor.valid() ? integrated.anchored_factor.get() : nullptr;
@@ -72,7 +73,9 @@ Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& 
       factor->solve(A.asDiagonal() * integrated.pull.bottomRows(m), &filtered);
       X.bottomRows(m) += filtered;
     }
-    X = arap_solve(graph, P, std::move(X), integrated.anchored, factor.get());
+    ArapSolveReport steps;
+    X = arap_solve(graph, P, std::move(X), integrated.anchored, factor.get(), &steps);
+    if (report && steps.steps > 0) *report = steps;
   }
   X.rowwise() -= X.colwise().mean();
   return X;

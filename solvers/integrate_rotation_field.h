@@ -81,10 +81,12 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
 /// anchor * lambda2 (integrate_rotations' options), the field first moved by
 /// its pull, filtered: (L + A)^-1 A pull, A the anchor weights (a = anchor *
 /// lambda2 per vertex, or shared by stiffness).
+/// @param report optional: the anchored steps taken and whether they converged
+///        (ArapSolveReport; none taken: 0 steps, converged)
 /// @return zero-mean positions (n x 3)
 /// @throws UsageError for mismatched sizes
 Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                IntegratedRotations integrated);
+                                IntegratedRotations integrated, ArapSolveReport* report = nullptr);
 
 /// integrate_rotations, then anchored_steps.
 /// @return zero-mean positions (n x 3); Q itself (centred) when iterations is 0

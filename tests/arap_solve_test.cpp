@@ -159,6 +159,30 @@ TEST(ArapSolve, AcceleratedStepsEndWhereThePlainStepsDo) {
   EXPECT_LT(anchored_energy(graph, g.mesh.V, accelerated, bent, 1, 0.1), 0.5 * before);
 }
 
+// The report counts the steps and says whether they converged, and asking
+// for it changes nothing: capped at two steps, two and not converged; run to
+// the tolerance, fewer steps than the cap and converged.
+TEST(ArapSolve, ReportsItsStepsAndWhetherTheyConverged) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
+  ArapSolveOptions options = anchored_to_convergence();
+  ArapSolveReport report;
+  const Eigen::MatrixX3d converged = arap_solve(graph, g.mesh.V, bent, options, nullptr, &report);
+  EXPECT_TRUE(report.converged);
+  EXPECT_GT(report.steps, 2);
+  EXPECT_LT(report.steps, options.max_iterations);
+  EXPECT_EQ(converged, arap_solve(graph, g.mesh.V, bent, options));
+  options.max_iterations = 2;
+  const Eigen::MatrixX3d capped = arap_solve(graph, g.mesh.V, bent, options, nullptr, &report);
+  EXPECT_FALSE(report.converged);
+  EXPECT_EQ(report.steps, 2);
+  EXPECT_EQ(capped, arap_solve(graph, g.mesh.V, bent, options));
+  options.max_iterations = 0;
+  arap_solve(graph, g.mesh.V, bent, options, nullptr, &report);
+  EXPECT_EQ(report.steps, 0);
+}
+
 // With inverse-length weights a rigid motion is still followed exactly.
 TEST(ArapSolve, InverseLengthWeightsFollowARigidMotion) {
   const BoundaryFirstGrid g;

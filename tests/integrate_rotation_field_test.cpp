@@ -69,6 +69,33 @@ TEST(IntegrateRotationField, KeepsABendAndDropsTheInflation) {
   EXPECT_LT(to_bent, 0.25 * aligned_distance(puffed, bent));
 }
 
+// The anchored steps' report: with a cap of two steps and no tolerance, two
+// and not converged; with room and a tolerance, fewer than the cap and
+// converged; without anchored steps, none and converged.
+TEST(IntegrateRotationField, AnchoredStepsReportTheirCountAndConvergence) {
+  const Grid g;
+  Eigen::MatrixX3d Q = 1.5 * g.mesh.V;  // inflated, and its bar waved
+  Q.col(1) += 0.4 * g.mesh.V.col(0).array().sin().matrix();
+  const auto run = [&](int iterations, double tolerance) {
+    IntegrateOptions options = steps(iterations);
+    options.tolerance = tolerance;
+    ArapSolveReport report;
+    anchored_steps(g.graph, g.mesh.V, integrate_rotations(g.graph, g.mesh.V, Q, g.lambda2, options),
+                   &report);
+    return report;
+  };
+  const ArapSolveReport capped = run(3, 0);
+  EXPECT_EQ(capped.steps, 2);
+  EXPECT_FALSE(capped.converged);
+  const ArapSolveReport room = run(500, 1e-6);
+  EXPECT_GT(room.steps, 0);
+  EXPECT_LT(room.steps, 499);
+  EXPECT_TRUE(room.converged);
+  const ArapSolveReport none = run(1, 1e-6);
+  EXPECT_EQ(none.steps, 0);
+  EXPECT_TRUE(none.converged);
+}
+
 IntegrateOptions pulled(int iterations, double pose_pull) {
   IntegrateOptions options = steps(iterations);
   options.pose_pull = pose_pull;

@@ -93,6 +93,15 @@ TEST(MethodStages, TheDriverTimesEveryStageOnceInOrder) {
                                                        "soft joints: filter"}));
   EXPECT_DOUBLE_EQ(d.seconds_integration, stage_seconds_sum(d.stage_seconds, {"integration"}));
   EXPECT_DOUBLE_EQ(d.seconds_anchored, stage_seconds_sum(d.stage_seconds, {"anchored steps"}));
+  // The anchored steps' count within their cap (the integration is the first step), in the JSON.
+  EXPECT_GT(d.anchored_steps, 0);
+  EXPECT_LT(d.anchored_steps, default_options.integrate.iterations);
+  const std::string json = to_json_text(metrics_document(d, default_options));
+  EXPECT_NE(json.find("\"anchored_steps\": " + std::to_string(d.anchored_steps)),
+            std::string::npos);
+  EXPECT_NE(json.find(std::string("\"anchored_converged\": ") +
+                      (d.anchored_converged ? "true" : "false")),
+            std::string::npos);
   EXPECT_DOUBLE_EQ(d.tet_report.seconds,
                    stage_seconds_sum(d.stage_seconds, {"tets of the unfolded shape"}));
   EXPECT_DOUBLE_EQ(d.metrics.seconds, stage_seconds_sum(d.stage_seconds, {"metrics"}));
