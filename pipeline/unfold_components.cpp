@@ -119,12 +119,12 @@ UnfoldResult merge_results(const std::vector<UnfoldResult>& parts,
     merged.amg_levels = std::max(merged.amg_levels, r.amg_levels);
     merged.seconds_amg += r.seconds_amg;
     merged.cg.solves += r.cg.solves;
-    merged.anchored_steps = std::max(merged.anchored_steps, r.anchored_steps);
-    merged.anchored_converged = merged.anchored_converged && r.anchored_converged;
     merged.cg.iterations += r.cg.iterations;
     merged.cg.unconverged_solves += r.cg.unconverged_solves;
     merged.cg.worst_relative_residual =
         std::max(merged.cg.worst_relative_residual, r.cg.worst_relative_residual);
+    merged.anchored_steps = std::max(merged.anchored_steps, r.anchored_steps);
+    merged.anchored_converged = merged.anchored_converged && r.anchored_converged;
     for (const auto& w : r.warnings)
       merged.warnings.push_back("component " + std::to_string(c + 1) + ": " + w);
 
