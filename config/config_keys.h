@@ -58,6 +58,9 @@
     "hands keep their own detail as coarse parts do, docs/method.md)")                             \
   X(integrate_tolerance, "integrate.tolerance", integrate.tolerance,                               \
     "integrate.iterations: stop when a step moves every vertex less than this times the radius")   \
+  X(integrate_lbfgs, "integrate.lbfgs", integrate.lbfgs,                                           \
+    "integrate.iterations: L-BFGS window of the anchored steps (quasi-Newton steps, one solve "    \
+    "each, far fewer to converge: docs/performance.md); 0: local-global steps")                    \
   X(integrate_weights, "integrate.weights", integrate.weights,                                     \
     "integrate.iterations: edge weights of the steps: uniform, or inverse_length (a spring's "     \
     "stiffness: a tet mesh's long chords do not stiffen its bending, docs/method.md)")             \

@@ -178,6 +178,7 @@ Options::Options() {
   cascade.break_in_band = false;
   cascade.anderson = 5;
   integrate.iterations = 60;
+  integrate.lbfgs = 5;
   integrate.weights = "inverse_length";
   integrate.anchor_weights = "stiffness";
   integrate.surface_edges = 0.25;
@@ -290,6 +291,7 @@ void validate_options(const Options& o) {
   require(o.contact_geodesic > 0 && std::isfinite(o.contact_geodesic),
           "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
+  require(o.integrate.lbfgs >= 0, "integrate.lbfgs", "must be >= 0 (0 = local-global steps)");
   require(o.integrate.weights == "uniform" || o.integrate.weights == "inverse_length",
           "integrate.weights",
           "must be uniform or inverse_length, got '" + o.integrate.weights + "'");

@@ -4,26 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/parallel.h"
+#include "core/parallel_segments.h"
 
 namespace unfold {
-namespace {
-
-// Vectors of the n x 3 positions of at least kMinParallelRows vertices are
-// swept on all threads in segments of this many entries. Every entry is
-// computed as on one thread, so the step is the same bit for bit.
-constexpr Eigen::Index kSegment = 4096;
-constexpr Eigen::Index kMinParallelEntries = 3 * Eigen::Index(kMinParallelRows);
-
-template <typename Sweep>
-void for_segments(Eigen::Index n, const Sweep& sweep) {
-  const Eigen::Index segments = (n + kSegment - 1) / kSegment;
-#pragma omp parallel for schedule(static) if (n >= kMinParallelEntries)
-  for (Eigen::Index k = 0; k < segments; ++k)
-    sweep(k * kSegment, std::min(kSegment, n - k * kSegment));
-}
-
-}  // namespace
 
 void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& x,
                                 const Eigen::Ref<const Eigen::VectorXd>& g,

@@ -13,6 +13,7 @@
 #include "geometry/rotations.h"
 #include "mesh/cell_covariances.h"
 #include "solvers/anderson_acceleration.h"
+#include "solvers/lbfgs_direction.h"
 #include "solvers/sparse_ldlt.h"
 
 namespace unfold {
@@ -23,6 +24,10 @@ namespace {
 // (wolf0's 4.4k: its anchored steps' 74 fits 59 -> 36 ms), far below
 // kMinParallelRows.
 constexpr int kMinParallelCells = 1024;
+
+// L-BFGS steps: halvings of a step that does not lower the energy enough
+// before the plain step is taken instead.
+constexpr int kMaxHalvings = 3;
 
 // Edge factors: none, or one finite positive number per edge.
 void check_edge_factors(const EdgeGraph& graph, const ArapSolveOptions& options,
@@ -155,8 +160,9 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   if (P.rows() != n || Q.rows() != n || num_fixed < 1 || num_fixed > n)
     throw UsageError("arap_solve: need P and Q with one row per graph vertex and 1 to n held");
   if (options.max_iterations < 0 || !(options.tolerance >= 0) || !(options.anchor >= 0) ||
-      options.anderson < 0)
-    throw UsageError("arap_solve: max_iterations, tolerance, anchor and anderson must be >= 0");
+      options.anderson < 0 || options.lbfgs < 0)
+    throw UsageError(
+        "arap_solve: max_iterations, tolerance, anchor, anderson and lbfgs must be >= 0");
   check_edge_factors(graph, options, "arap_solve");
   if (report) *report = {};
   if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
@@ -223,6 +229,10 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   bool warm = false;
   Eigen::MatrixX3d B(m, 3);
   RowMatrixX3d x_rows;
+  // L-BFGS steps: where fit writes half the energy's gradient over the free rows,
+  // sum_j w_ij (x_i - x_j) + a_i (x_i - start_i) - B_i (the neighbours held or
+  // free; the global step solves it = 0 with B held); null: not wanted.
+  Eigen::MatrixX3d* half_gradient = nullptr;
   const auto fit = [&](const Eigen::MatrixX3d& X) {
     x_rows = X;
     double energy = 0;
@@ -267,57 +277,112 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
         b.noalias() +=
             R[size_t(graph.neighbors[size_t(k)])] * rest.weighted_edges.row(k).transpose();
       B.row(i - num_fixed) = 0.5 * b.transpose();
+      if (half_gradient) {
+        Eigen::RowVector3d r = anchor(i - num_fixed) * (x_rows.row(i) - start.row(i - num_fixed)) -
+                               0.5 * b.transpose();
+        for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+          r += weights[size_t(graph.neighbor_edge[size_t(k)])] *
+               (x_rows.row(i) - x_rows.row(graph.neighbors[size_t(k)]));
+        half_gradient->row(i - num_fixed) = r;
+      }
     }
     return energy + anchor.dot((X.bottomRows(m) - start).rowwise().squaredNorm());
   };
-  const bool accelerate = options.anderson > 0;
-  AndersonAcceleration anderson(std::max(1, options.anderson));
+  Eigen::MatrixX3d g, g_next;  // L-BFGS: half gradients at the iterate and the trial
+  if (options.lbfgs > 0) {
+    g.resize(m, 3);
+    g_next.resize(m, 3);
+    half_gradient = &g;
+  }
   double level = fit(Q);
   // The steps' right side, solution, start and extrapolation: storage reused.
   Eigen::MatrixX3d rhs, free, x, extrapolated;
   int it = 0;
   bool converged = false;
-  while (it < options.max_iterations) {
-    ++it;
-    report_step(it, options.max_iterations);
-    // d/dq_i of the energy = 0 for the free rows, R held.
-    rhs = fixed_rhs + B;
-    ldlt.solve(rhs, &free);
-    const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();
-    x = Q.bottomRows(m);
-    bool plain = !accelerate;
-    double energy = 0;
-    if (accelerate) {
-      extrapolated.resize(m, 3);
-      anderson.next(x.reshaped(), free.reshaped(), extrapolated.reshaped());
-      Q.bottomRows(m) = extrapolated;
-      energy = fit(Q);
-      if (!(energy < level)) {
-        anderson.reset();
-        plain = true;
+  if (options.lbfgs > 0) {
+    const LbfgsDirection::InitialInverse global_solve =
+        [&](const Eigen::MatrixX3d& q, Eigen::MatrixX3d* r) { ldlt.solve(q, r); };
+    LbfgsDirection lbfgs(options.lbfgs);
+    Eigen::MatrixX3d d;
+    half_gradient = &g_next;
+    while (it < options.max_iterations) {
+      ++it;
+      report_step(it, options.max_iterations);
+      x = Q.bottomRows(m);
+      double energy = 0;
+      // The quasi-Newton step, halved until it lowers the energy enough (Armijo);
+      // after kMaxHalvings the plain step (the history forgotten), which never raises it.
+      lbfgs.direction(g, global_solve, &d);
+      for (int halvings = 0;; ++halvings) {
+        Q.bottomRows(m) = x + d;
+        energy = fit(Q);
+        if (energy <= level + 2e-4 * g.reshaped().dot(d.reshaped()) || lbfgs.size() == 0) break;
+        if (halvings < kMaxHalvings) {
+          d *= 0.5;
+        } else {
+          lbfgs.reset();
+          lbfgs.direction(g, global_solve, &d);
+        }
       }
-    }
-    converged = step <= options.tolerance * radius;
-    const bool last = converged || it == options.max_iterations;
-    if (plain) {
-      Q.bottomRows(m) = free;
-      if (last) break;  // no rotations needed after it
-      energy = fit(Q);
-      // A plain step that does not lower the energy: converged as far as
-      // rounding lets it tell; keep the lower iterate.
-      if (!(energy < level)) {
+      if (!(energy < level)) {  // converged as far as rounding lets it tell
         Q.bottomRows(m) = x;
         converged = true;
         break;
       }
+      level = energy;
+      lbfgs.update(d, g_next, g);
+      g.swap(g_next);
+      if (d.rowwise().norm().maxCoeff() <= options.tolerance * radius) {
+        converged = true;
+        break;
+      }
     }
-    level = energy;
-    if (last) break;
+  } else {
+    const bool accelerate = options.anderson > 0;
+    AndersonAcceleration anderson(std::max(1, options.anderson));
+    while (it < options.max_iterations) {
+      ++it;
+      report_step(it, options.max_iterations);
+      // d/dq_i of the energy = 0 for the free rows, R held.
+      rhs = fixed_rhs + B;
+      ldlt.solve(rhs, &free);
+      const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();
+      x = Q.bottomRows(m);
+      bool plain = !accelerate;
+      double energy = 0;
+      if (accelerate) {
+        extrapolated.resize(m, 3);
+        anderson.next(x.reshaped(), free.reshaped(), extrapolated.reshaped());
+        Q.bottomRows(m) = extrapolated;
+        energy = fit(Q);
+        if (!(energy < level)) {
+          anderson.reset();
+          plain = true;
+        }
+      }
+      converged = step <= options.tolerance * radius;
+      const bool last = converged || it == options.max_iterations;
+      if (plain) {
+        Q.bottomRows(m) = free;
+        if (last) break;  // no rotations needed after it
+        energy = fit(Q);
+        // A plain step that does not lower the energy: converged as far as
+        // rounding lets it tell; keep the lower iterate.
+        if (!(energy < level)) {
+          Q.bottomRows(m) = x;
+          converged = true;
+          break;
+        }
+      }
+      level = energy;
+      if (last) break;
+    }
   }
   if (report) *report = {it, converged};
   report_detail([&](std::ostream& line) {
     line << "ARAP: " << it << " steps, " << m << " free vertices, anchor " << options.anchor
-         << ", Anderson " << options.anderson << ", energy " << level;
+         << (options.lbfgs > 0 ? ", L-BFGS " : ", Anderson ")
+         << (options.lbfgs > 0 ? options.lbfgs : options.anderson) << ", energy " << level;
   });
   return Q;
 }

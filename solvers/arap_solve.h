@@ -47,6 +47,13 @@ struct ArapSolveOptions {
   /// size follow the anchor's shape where elsewhere they get the rest shape's
   /// back (docs/method.md, the anchor).
   bool anchor_by_stiffness = false;
+  /// L-BFGS window: > 0, quasi-Newton steps instead of local-global ones
+  /// (LbfgsDirection, the global step's factor their initial inverse Hessian;
+  /// anderson unused), each halved until it lowers the energy enough, after
+  /// three halvings a plain step; the steps' count to a tolerance drops
+  /// several-fold where soft modes make local-global steps crawl
+  /// (docs/performance.md, the anchored steps' convergence); 0: local-global
+  int lbfgs = 0;
 };
 
 /// What arap_solve's steps did.
@@ -91,7 +98,7 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
 ///        (then it is made here, when there is a step to take)
 /// @param report optional: the steps taken and whether they converged
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
-///         max_iterations < 0, tolerance < 0, anchor < 0 or anderson < 0, or
+///         max_iterations < 0, tolerance < 0, anchor < 0, anderson < 0 or lbfgs < 0, or
 ///         edge_factors are not one finite factor > 0 per edge
 /// @throws NumericalError if some free vertex has no path to a held one (checked
 ///         only when there is a step to take: max_iterations > 0)

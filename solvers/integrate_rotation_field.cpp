@@ -26,9 +26,10 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
                                         const IntegrateOptions& options,
                                         const std::vector<double>& edge_factors) {
   if (options.iterations < 0 || !(options.anchor >= 0) || !(options.tolerance >= 0) ||
-      !(lambda2 > 0))
+      options.lbfgs < 0 || !(lambda2 > 0))
     throw UsageError(
-        "integrate_rotation_field: iterations, anchor and tolerance must be >= 0, lambda_2 > 0");
+        "integrate_rotation_field: iterations, anchor, tolerance and lbfgs must be >= 0, lambda_2 "
+        "> 0");
   if (!(options.pose_pull >= 0 && options.pose_pull <= 1))
     throw UsageError("integrate_rotation_field: pose_pull must be in [0, 1]");
   if (options.weights != "uniform" && options.weights != "inverse_length")
@@ -45,6 +46,7 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
                           {},
                           {}};
   out.anchored.anchor_by_stiffness = options.anchor_weights == "stiffness";
+  out.anchored.lbfgs = options.lbfgs;
   if (options.iterations == 0) return out;
   if (out.anchored.max_iterations > 0 && graph.num_vertices > 1)
     out.anchored_factor = std::async(std::launch::async, [&graph, &P, anchored = out.anchored] {

@@ -28,6 +28,9 @@ struct IntegrateOptions {
   /// anchor_by_stiffness: finely meshed parts keep their own detail as coarse ones do)
   std::string anchor_weights = "uniform";
   double tolerance = 1e-4;  ///< the steps stop when they move less (relative to the radius)
+  /// L-BFGS window of the anchored steps (ArapSolveOptions::lbfgs); 0: local-global
+  /// steps, Anderson-accelerated
+  int lbfgs = 0;
   /// edge weights of every step: "uniform" or "inverse_length" (ArapSolveOptions::
   /// inverse_length_weights: long chords of a tet mesh do not stiffen its bending)
   std::string weights = "uniform";

@@ -141,22 +141,36 @@ ArapSolveOptions anchored_to_convergence() {
   return options;
 }
 
-// Anderson acceleration changes how the steps get there, not where: from a
-// bent, noisy grid, accelerated and plain steps end at the same shape, and
-// neither ends above the energy it started from.
-TEST(ArapSolve, AcceleratedStepsEndWhereThePlainStepsDo) {
+// Anderson acceleration and L-BFGS steps change how the steps get there, not
+// where: from a bent, noisy grid, accelerated, L-BFGS and plain steps end at
+// the same shape, none above the energy it started from; L-BFGS steps take
+// far fewer than plain ones, and a cap on them is reported as such.
+TEST(ArapSolve, AcceleratedAndLbfgsStepsEndWhereThePlainStepsDo) {
   const BoundaryFirstGrid g;
   const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
   const Eigen::MatrixX3d bent = bent_and_noisy(g.mesh.V);
   ArapSolveOptions options = anchored_to_convergence();
   options.anderson = 0;
-  const Eigen::MatrixX3d plain = arap_solve(graph, g.mesh.V, bent, options);
+  ArapSolveReport plain_report, lbfgs_report;
+  const Eigen::MatrixX3d plain = arap_solve(graph, g.mesh.V, bent, options, nullptr, &plain_report);
   options.anderson = 5;
   const Eigen::MatrixX3d accelerated = arap_solve(graph, g.mesh.V, bent, options);
-  EXPECT_LT((plain - accelerated).rowwise().norm().maxCoeff(), 1e-4);
+  options.lbfgs = 5;
+  const Eigen::MatrixX3d lbfgs = arap_solve(graph, g.mesh.V, bent, options, nullptr, &lbfgs_report);
   const double before = anchored_energy(graph, g.mesh.V, bent, bent, 1, 0.1);
-  EXPECT_LT(anchored_energy(graph, g.mesh.V, plain, bent, 1, 0.1), 0.5 * before);
-  EXPECT_LT(anchored_energy(graph, g.mesh.V, accelerated, bent, 1, 0.1), 0.5 * before);
+  const double plain_energy = anchored_energy(graph, g.mesh.V, plain, bent, 1, 0.1);
+  EXPECT_LT(plain_energy, 0.5 * before);
+  for (const Eigen::MatrixX3d* other : {&accelerated, &lbfgs}) {
+    EXPECT_LT((plain - *other).rowwise().norm().maxCoeff(), 1e-4);
+    EXPECT_LT(anchored_energy(graph, g.mesh.V, *other, bent, 1, 0.1), plain_energy + 1e-9);
+  }
+  EXPECT_TRUE(plain_report.converged);
+  EXPECT_TRUE(lbfgs_report.converged);
+  EXPECT_LT(2 * lbfgs_report.steps, plain_report.steps);
+  options.max_iterations = 3;
+  arap_solve(graph, g.mesh.V, bent, options, nullptr, &lbfgs_report);
+  EXPECT_EQ(lbfgs_report.steps, 3);
+  EXPECT_FALSE(lbfgs_report.converged);
 }
 
 // The report counts the steps and says whether they converged, and asking

@@ -10,8 +10,12 @@
 namespace unfold {
 namespace {
 
+// Named after the running test as well: ctest runs the tests of this file in
+// parallel processes, which would otherwise write one another's file.
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
+  const std::string path = ::testing::TempDir() + "/" +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                           name;
   std::ofstream(path) << text;
   return path;
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "config/options.h"
+#include "core/errors.h"
 #include "geometry/point_tree.h"
 #include "mesh/lumped_masses.h"
 #include "mesh/mean_curvature_scales.h"
