@@ -295,8 +295,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     half_gradient = &g;
   }
   double level = fit(Q);
-  // The steps' right side, solution, start and extrapolation: storage reused.
-  Eigen::MatrixX3d rhs, free, x, extrapolated;
+  Eigen::MatrixX3d x;  // each step's start (storage reused)
   int it = 0;
   bool converged = false;
   if (options.lbfgs > 0) {
@@ -340,6 +339,8 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   } else {
     const bool accelerate = options.anderson > 0;
     AndersonAcceleration anderson(std::max(1, options.anderson));
+    // The steps' right side, solution and extrapolation: storage reused.
+    Eigen::MatrixX3d rhs, free, extrapolated;
     while (it < options.max_iterations) {
       ++it;
       report_step(it, options.max_iterations);

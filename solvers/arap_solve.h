@@ -1,4 +1,4 @@
-// Local-global ARAP (as-rigid-as-possible, uniform edge weights) on an edge
+// ARAP (as-rigid-as-possible) by local-global or L-BFGS steps on an edge
 // graph, with some vertices held and the others optionally pulled back to
 // where they start. Two uses (docs/method.md):
 // - domain: surface places the interior (Steiner) vertices after the surface
@@ -58,7 +58,7 @@ struct ArapSolveOptions {
 
 /// What arap_solve's steps did.
 struct ArapSolveReport {
-  int steps = 0;  ///< local-global steps taken
+  int steps = 0;  ///< steps taken (local-global or L-BFGS)
   /// true: stopped by the tolerance or because a step no longer lowered the
   /// energy; false: by max_iterations (or there was no step to take)
   bool converged = false;
@@ -87,10 +87,12 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
 /// Minimises the ARAP energy 1/2 sum_i sum_{j in N_i} w_ij |q_i - q_j - R_i (p_i - p_j)|^2
 /// (plus the anchor; w_ij as options.inverse_length_weights) over the free rows of Q by
 /// alternating best rotations R
-/// (Kabsch, per vertex) and one sparse solve; returns Q with the free rows
-/// moved. Stops after max_iterations steps, when a plain step moves every free
-/// vertex by less than the tolerance, or when a plain step no longer lowers the
-/// energy (then the iterate before it is returned).
+/// (Kabsch, per vertex) and one sparse solve, or with options.lbfgs by L-BFGS
+/// steps that solve with the same factor; returns Q with the free rows moved.
+/// Stops after max_iterations steps, when a step (local-global: the plain one;
+/// L-BFGS: the one taken) moves every free vertex by less than the tolerance,
+/// or when a plain step no longer lowers the energy (then the iterate before
+/// it is returned).
 /// @param graph the edge graph (n vertices)
 /// @param P     rest positions, n x 3
 /// @param Q     n x 3: held rows and the free rows' start (and anchor)
