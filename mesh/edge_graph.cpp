@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "core/parallel.h"
 
@@ -35,24 +36,30 @@ EdgeGraph build_edge_graph(int num_vertices, const Eigen::MatrixXi& elements) {
     count[size_t(i)] = int(std::unique(first, last) - first);
   }
 
-  EdgeGraph g;
-  g.num_vertices = num_vertices;
-  g.offsets.assign(size_t(num_vertices) + 1, 0);
   int num_edges = 0;
   for (int i = 0; i < num_vertices; ++i) num_edges += count[size_t(i)];
-  g.edges.resize(num_edges, 2);
+  Eigen::MatrixX2i edges(num_edges, 2);
   for (int i = 0, e = 0; i < num_vertices; ++i)
     for (int c = 0; c < count[size_t(i)]; ++c, ++e) {
-      const int j = higher[size_t(start[size_t(i)] + c)];
-      g.edges(e, 0) = i;
-      g.edges(e, 1) = j;
-      ++g.offsets[size_t(i) + 1];
-      ++g.offsets[size_t(j) + 1];
+      edges(e, 0) = i;
+      edges(e, 1) = higher[size_t(start[size_t(i)] + c)];
     }
+  return edge_graph_from_sorted_edges(num_vertices, std::move(edges));
+}
+
+EdgeGraph edge_graph_from_sorted_edges(int num_vertices, Eigen::MatrixX2i edges) {
+  EdgeGraph g;
+  g.num_vertices = num_vertices;
+  g.edges = std::move(edges);
+  g.offsets.assign(size_t(num_vertices) + 1, 0);
+  for (int e = 0; e < g.num_edges(); ++e) {
+    ++g.offsets[size_t(g.edges(e, 0)) + 1];
+    ++g.offsets[size_t(g.edges(e, 1)) + 1];
+  }
   std::partial_sum(g.offsets.begin(), g.offsets.end(), g.offsets.begin());
-  g.neighbors.resize(2 * size_t(num_edges));
-  g.neighbor_edge.resize(2 * size_t(num_edges));
-  fill.assign(g.offsets.begin(), g.offsets.end() - 1);
+  g.neighbors.resize(2 * size_t(g.num_edges()));
+  g.neighbor_edge.resize(2 * size_t(g.num_edges()));
+  std::vector<int> fill(g.offsets.begin(), g.offsets.end() - 1);
   // Edges are sorted by (i, j), so each vertex's list comes out ascending:
   // lower neighbours arrive (as j of earlier edges) before higher ones.
   for (int e = 0; e < g.num_edges(); ++e) {

@@ -25,6 +25,11 @@ struct EdgeGraph {
 /// @param elements     rows of k >= 2 vertex indices, each in [0, num_vertices).
 EdgeGraph build_edge_graph(int num_vertices, const Eigen::MatrixXi& elements);
 
+/// The edge graph of the given edges, which must be as EdgeGraph::edges holds
+/// them: each row i < j, both in [0, num_vertices), rows sorted, none twice
+/// (unchecked: the builders above make them so).
+EdgeGraph edge_graph_from_sorted_edges(int num_vertices, Eigen::MatrixX2i edges);
+
 /// Uniform-weight graph Laplacian L = D - A (n x n, symmetric, rows sum to zero).
 Eigen::SparseMatrix<double> graph_laplacian(const EdgeGraph& graph);
 

@@ -10,7 +10,7 @@
 namespace unfold {
 
 /// Renumbers the interior vertices (rows num_surface_vertices and up) in
-/// Morton (Z-curve) order of their positions, ties by old index; the surface
+/// Morton (Z-curve) order of their positions (locality_order), ties by old index; the surface
 /// vertices keep their rows. T is renumbered to match: the same mesh.
 /// @param made optional other positions of the same vertices (where the tets
 ///        were made, e.g. the unfolded shape's): the order is theirs, and their

@@ -4,6 +4,8 @@
 
 #include "core/errors.h"
 #include "geometry/best_rotation.h"
+#include "mesh/locality_order.h"
+#include "mesh/permute_edge_graph.h"
 
 namespace unfold {
 namespace {
@@ -39,28 +41,56 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
     throw UsageError(
         "integrate_rotation_field: anchor_weights must be uniform or stiffness, got '" +
         options.anchor_weights + "'");
+  const int n = graph.num_vertices;
+  if (P.rows() != n || Q.rows() != n ||
+      !(edge_factors.empty() || edge_factors.size() == size_t(graph.num_edges())))
+    throw UsageError(
+        "integrate_rotation_field: need P and Q with one row per graph vertex, and no edge "
+        "factors or one per edge");
   const bool inverse_length = options.weights == "inverse_length";
   IntegratedRotations out{Q,
                           {1, options.iterations - 1, options.tolerance, options.anchor * lambda2,
                            5, inverse_length, edge_factors},
                           {},
+                          {},
                           {}};
   out.anchored.anchor_by_stiffness = options.anchor_weights == "stiffness";
   out.anchored.lbfgs = options.lbfgs;
   if (options.iterations == 0) return out;
-  if (out.anchored.max_iterations > 0 && graph.num_vertices > 1)
-    out.anchored_factor = std::async(std::launch::async, [&graph, &P, anchored = out.anchored] {
-      return arap_factorization(graph, P, anchored);
+  const EdgeGraph* g = &graph;
+  const Eigen::MatrixX3d* rest = &P;
+  const Eigen::MatrixX3d* start = &Q;
+  if (n >= options.locality_order_vertices) {
+    auto r = std::make_unique<LocalityOrdered>();
+    r->order = locality_order(P, 1);  // the held vertex stays first
+    std::vector<int> edge_order;
+    r->graph = permute_edge_graph(graph, r->order, &edge_order);
+    r->P = P(r->order, Eigen::all);
+    r->Q = Q(r->order, Eigen::all);
+    out.positions = r->Q;
+    for (size_t e = 0; e < edge_factors.size(); ++e)
+      out.anchored.edge_factors[e] = edge_factors[size_t(edge_order[e])];
+    g = &r->graph;
+    rest = &r->P;
+    start = &r->Q;
+    out.reordered = std::move(r);
+  }
+  if (out.anchored.max_iterations > 0 && n > 1)
+    out.anchored_factor = std::async(std::launch::async, [g, rest, anchored = out.anchored] {
+      return arap_factorization(*g, *rest, anchored);
     });
-  out.positions = arap_solve(graph, P, std::move(out.positions),
-                             {1, 1, 0.0, 0.0, 0, inverse_length, edge_factors});
+  ArapSolveOptions integrate{1, 1, 0.0, 0.0, 0, inverse_length, out.anchored.edge_factors};
+  out.positions = arap_solve(*g, *rest, std::move(out.positions), integrate);
   if (options.pose_pull > 0 && out.anchored_factor.valid())
-    out.pull = options.pose_pull * (fit_similarity(Q, out.positions) - out.positions);
+    out.pull = options.pose_pull * (fit_similarity(*start, out.positions) - out.positions);
   return out;
 }
 
-Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+Eigen::MatrixX3d anchored_steps(const EdgeGraph& caller_graph, const Eigen::MatrixX3d& caller_P,
                                 IntegratedRotations integrated, ArapSolveReport* report) {
+  const LocalityOrdered* r = integrated.reordered.get();
+  const EdgeGraph& graph = r ? r->graph : caller_graph;
+  const Eigen::MatrixX3d& P = r ? r->P : caller_P;
   Eigen::MatrixX3d X = std::move(integrated.positions);
   if (report) *report = {0, true};
   if (integrated.anchored.max_iterations >= 0) {  // iterations > 0: integrated
@@ -80,7 +110,10 @@ Eigen::MatrixX3d anchored_steps(const EdgeGraph& graph, const Eigen::MatrixX3d& 
     if (report && steps.steps > 0) *report = steps;
   }
   X.rowwise() -= X.colwise().mean();
-  return X;
+  if (!r) return X;
+  Eigen::MatrixX3d in_caller_order(X.rows(), 3);
+  in_caller_order(r->order, Eigen::all) = X;
+  return in_caller_order;
 }
 
 Eigen::MatrixX3d integrate_rotation_field(const EdgeGraph& graph, const Eigen::MatrixX3d& P,

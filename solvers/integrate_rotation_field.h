@@ -46,17 +46,34 @@ struct IntegrateOptions {
   /// shapes differ between poses (docs/method.md, pose pull); 0: off. Without
   /// anchored steps (iterations < 2 or anchor 0) nothing filters it: no pull.
   double pose_pull = 0;
+  /// from this many vertices the steps run on the graph renumbered in locality_order
+  /// (mesh/locality_order.h), their result put back in the caller's order: a cell's
+  /// neighbours are then near in memory, where a refined scan's are far apart. At
+  /// 197k tet vertices that took the anchored steps from about 11 to 8.4 s; below
+  /// about this the steps' data fit the caches (docs/performance.md, large scans)
+  int locality_order_vertices = 100000;
+};
+
+/// The graph and positions the steps run on, renumbered.
+struct LocalityOrdered {
+  std::vector<int> order;  ///< locality_order: the new vertex i is the caller's order[i]
+  EdgeGraph graph;
+  Eigen::MatrixX3d P, Q;  ///< the rest positions and those whose field is integrated
 };
 
 /// The first step done (integrate_rotations) and what the anchored steps after
 /// it need: their factorization, being made on another thread meanwhile.
 struct IntegratedRotations {
-  Eigen::MatrixX3d positions;  ///< the integrated field (n x 3); Q when iterations is 0
-  ArapSolveOptions anchored;   ///< the anchored steps' options
+  /// the integrated field (n x 3; in `reordered`'s order if any); Q when iterations is 0
+  Eigen::MatrixX3d positions;
+  ArapSolveOptions anchored;                                 ///< the anchored steps' options
   std::future<std::unique_ptr<SparseLdlt>> anchored_factor;  ///< invalid: none made
   /// pose_pull times (Q fitted to positions) - positions, filtered by the anchored
   /// steps before they start; empty: none
   Eigen::MatrixX3d pull;
+  /// from options.locality_order_vertices: what the steps run on (the factor refers to it,
+  /// so it is held here); null: the caller's graph and P
+  std::unique_ptr<const LocalityOrdered> reordered;
 };
 
 /// Integrates the rotation field of `Q` (best rotations from P, per vertex):

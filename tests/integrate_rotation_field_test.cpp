@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include "core/errors.h"
 #include "metrics/rigid_alignment.h"
 #include "solvers/fiedler_value.h"
@@ -161,6 +165,34 @@ TEST(IntegrateRotationField, TurnsWithItsInput) {
   const Eigen::MatrixX3d Y =
       integrate_rotation_field(g.graph, g.mesh.V, Q * R.transpose(), g.lambda2, steps(8));
   EXPECT_LT((Y - X * R.transpose()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+// The steps renumbered in locality order (as from 100k vertices) end where
+// they do in the caller's order, to rounding, with every option that touches
+// the vertices' or edges' order: edge factors, a pull, the anchor by stiffness.
+TEST(IntegrateRotationField, RenumberingChangesOnlyTheRounding) {
+  const Grid g(10);
+  Eigen::MatrixX3d Q = 1.4 * g.mesh.V;
+  Q.col(1) += 0.5 * g.mesh.V.col(0).array().sin().matrix();
+  std::vector<double> factors(size_t(g.graph.num_edges()));
+  for (size_t e = 0; e < factors.size(); ++e) factors[e] = 0.5 + double(e % 7) / 7;
+  IntegrateOptions options = pulled(12, 0.5);
+  options.anchor_weights = "stiffness";
+  options.lbfgs = 5;
+  ArapSolveReport in_order, renumbered;
+  const Eigen::MatrixX3d X = anchored_steps(
+      g.graph, g.mesh.V, integrate_rotations(g.graph, g.mesh.V, Q, g.lambda2, options, factors),
+      &in_order);
+  options.locality_order_vertices = 0;
+  IntegratedRotations r = integrate_rotations(g.graph, g.mesh.V, Q, g.lambda2, options, factors);
+  ASSERT_TRUE(r.reordered);
+  const std::vector<int>& order = r.reordered->order;
+  EXPECT_EQ(order[0], 0);  // the held vertex
+  EXPECT_FALSE(std::is_sorted(order.begin(), order.end()));
+  const Eigen::MatrixX3d Y = anchored_steps(g.graph, g.mesh.V, std::move(r), &renumbered);
+  EXPECT_LT((X - Y).cwiseAbs().maxCoeff(), 1e-8);
+  EXPECT_GT((X - g.centred()).cwiseAbs().maxCoeff(), 0.1);  // the steps moved it
+  EXPECT_EQ(in_order.steps, renumbered.steps);
 }
 
 TEST(IntegrateRotationField, RefusesBadOptions) {
