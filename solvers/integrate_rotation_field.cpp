@@ -59,20 +59,21 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
   if (options.iterations == 0) return out;
   const EdgeGraph* g = &graph;
   const Eigen::MatrixX3d* rest = &P;
-  const Eigen::MatrixX3d* start = &Q;
+  const Eigen::MatrixX3d* start = &Q;  // Q in the steps' order: the pull's target
+  Eigen::MatrixX3d reordered_Q;
   if (n >= options.locality_order_vertices) {
     auto r = std::make_unique<LocalityOrdered>();
     r->order = locality_order(P, 1);  // the held vertex stays first
     std::vector<int> edge_order;
     r->graph = permute_edge_graph(graph, r->order, &edge_order);
     r->P = P(r->order, Eigen::all);
-    r->Q = Q(r->order, Eigen::all);
-    out.positions = r->Q;
+    reordered_Q = Q(r->order, Eigen::all);
+    out.positions = reordered_Q;
+    start = &reordered_Q;
     for (size_t e = 0; e < edge_factors.size(); ++e)
       out.anchored.edge_factors[e] = edge_factors[size_t(edge_order[e])];
     g = &r->graph;
     rest = &r->P;
-    start = &r->Q;
     out.reordered = std::move(r);
   }
   if (out.anchored.max_iterations > 0 && n > 1)

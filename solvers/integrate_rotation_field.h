@@ -58,7 +58,7 @@ struct IntegrateOptions {
 struct LocalityOrdered {
   std::vector<int> order;  ///< locality_order: the new vertex i is the caller's order[i]
   EdgeGraph graph;
-  Eigen::MatrixX3d P, Q;  ///< the rest positions and those whose field is integrated
+  Eigen::MatrixX3d P;  ///< the rest positions
 };
 
 /// The first step done (integrate_rotations) and what the anchored steps after
