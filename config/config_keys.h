@@ -61,6 +61,9 @@
   X(integrate_lbfgs, "integrate.lbfgs", integrate.lbfgs,                                           \
     "integrate.iterations: L-BFGS window of the anchored steps (quasi-Newton steps, one solve "    \
     "each, far fewer to converge: docs/performance.md); 0: local-global steps")                    \
+  X(integrate_multigrid_vertices, "integrate.multigrid_vertices", integrate.multigrid_vertices,    \
+    "integrate.lbfgs > 0: from this many tet vertices the anchored steps solve with one AMG "      \
+    "V-cycle instead of a factorization (docs/performance.md, large scans)")                       \
   X(integrate_weights, "integrate.weights", integrate.weights,                                     \
     "integrate.iterations: edge weights of the steps: uniform, or inverse_length (a spring's "     \
     "stiffness: a tet mesh's long chords do not stiffen its bending, docs/method.md)")             \

@@ -292,6 +292,7 @@ void validate_options(const Options& o) {
           "tetrahedralize.contact_geodesic", "must be a positive finite number");
   require(o.integrate.iterations >= 0, "integrate.iterations", "must be >= 0 (0 = off)");
   require(o.integrate.lbfgs >= 0, "integrate.lbfgs", "must be >= 0 (0 = local-global steps)");
+  require(o.integrate.multigrid_vertices >= 0, "integrate.multigrid_vertices", "must be >= 0");
   require(o.integrate.weights == "uniform" || o.integrate.weights == "inverse_length",
           "integrate.weights",
           "must be uniform or inverse_length, got '" + o.integrate.weights + "'");

@@ -13,6 +13,7 @@
 #include "geometry/rotations.h"
 #include "mesh/cell_covariances.h"
 #include "solvers/anderson_acceleration.h"
+#include "solvers/arap_multigrid.h"
 #include "solvers/lbfgs_direction.h"
 #include "solvers/sparse_ldlt.h"
 
@@ -28,16 +29,19 @@ constexpr int kMinParallelCells = 1024;
 // L-BFGS steps: halvings of a step that does not lower the energy enough
 // before the plain step is taken instead.
 constexpr int kMaxHalvings = 3;
+// With a multigrid, halvings of the plain step (a descent direction, not a
+// local-global step) before the steps count as converged.
+constexpr int kMaxPlainHalvings = 10;
 
 // Edge factors: none, or one finite positive number per edge.
 void check_edge_factors(const EdgeGraph& graph, const ArapSolveOptions& options,
-                        const char* caller) {
+                        const std::string& caller) {
   const auto& f = options.edge_factors;
   if (f.empty()) return;
   bool ok = f.size() == size_t(graph.num_edges());
   for (const double x : f) ok = ok && std::isfinite(x) && x > 0;
   if (!ok)
-    throw UsageError(std::string(caller) + ": edge_factors needs one finite factor > 0 per edge (" +
+    throw UsageError(caller + ": edge_factors needs one finite factor > 0 per edge (" +
                      std::to_string(graph.num_edges()) + "), got " + std::to_string(f.size()));
 }
 
@@ -97,11 +101,10 @@ Eigen::SparseMatrix<double> weighted_laplacian(const EdgeGraph& graph,
   return L;
 }
 
-// arap_factorization with the edge weights computed already (m >= 1 free rows).
-std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
-                                                 const std::vector<double>& weights,
-                                                 const Eigen::VectorXd& anchor,
-                                                 const ArapSolveOptions& options) {
+// arap_global_matrix with the edge weights computed already (m >= 1 free rows).
+Eigen::SparseMatrix<double> free_block(const EdgeGraph& graph, const std::vector<double>& weights,
+                                       const Eigen::VectorXd& anchor,
+                                       const ArapSolveOptions& options) {
   const int m = graph.num_vertices - options.num_fixed;
   // The free vertices' block of the graph Laplacian (plus the anchor); edges
   // to held vertices go to the right side.
@@ -117,6 +120,10 @@ std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
     A.setFromTriplets(diagonal.begin(), diagonal.end());
     L += A;
   }
+  return L;
+}
+
+std::unique_ptr<SparseLdlt> factorize_free_block(const Eigen::SparseMatrix<double>& L) {
   // L is positive definite (every free vertex reaches a held one): supernodal
   // LL^T, 3-4x faster to factorize than LDL^T on a 68k-vertex tet mesh.
   auto ldlt = std::make_unique<SparseLdlt>(SparseLdlt::Backend::kCholmodCholesky);
@@ -131,17 +138,22 @@ std::unique_ptr<SparseLdlt> factorize_free_block(const EdgeGraph& graph,
 
 }  // namespace
 
-std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
-                                               const ArapSolveOptions& options) {
+Eigen::SparseMatrix<double> arap_global_matrix(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                               const ArapSolveOptions& options,
+                                               const std::string& caller) {
   const int n = graph.num_vertices, num_fixed = options.num_fixed;
   if (P.rows() != n || num_fixed < 1 || num_fixed >= n)
-    throw UsageError(
-        "arap_factorization: need P with one row per graph vertex and 1 to n - 1 held");
-  check_edge_factors(graph, options, "arap_factorization");
+    throw UsageError(caller + ": need P with one row per graph vertex and 1 to n - 1 held");
+  check_edge_factors(graph, options, caller);
   std::vector<double> weights = length_weights(graph, P, options);
   const Eigen::VectorXd anchor = anchor_weights(graph, P, weights, options);
   apply_edge_factors(options, &weights);
-  return factorize_free_block(graph, weights, anchor, options);
+  return free_block(graph, weights, anchor, options);
+}
+
+std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                               const ArapSolveOptions& options) {
+  return factorize_free_block(arap_global_matrix(graph, P, options, "arap_factorization"));
 }
 
 Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
@@ -155,7 +167,7 @@ Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX
 
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
                             const ArapSolveOptions& options, const SparseLdlt* factor,
-                            ArapSolveReport* report) {
+                            ArapSolveReport* report, const ArapMultigrid* multigrid) {
   const int n = graph.num_vertices, num_fixed = options.num_fixed, m = n - num_fixed;
   if (P.rows() != n || Q.rows() != n || num_fixed < 1 || num_fixed > n)
     throw UsageError("arap_solve: need P and Q with one row per graph vertex and 1 to n held");
@@ -164,6 +176,8 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     throw UsageError(
         "arap_solve: max_iterations, tolerance, anchor, anderson and lbfgs must be >= 0");
   check_edge_factors(graph, options, "arap_solve");
+  if (multigrid && (factor || multigrid->matrix.rows() != m))
+    throw UsageError("arap_solve: a multigrid needs no factor and one row per free vertex");
   if (report) *report = {};
   if (m == 0 || options.max_iterations == 0) return Q;  // nothing to move: no factorization
   report_stage("ARAP steps, " + std::to_string(m) + " free vertices" +
@@ -172,11 +186,10 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   const Eigen::VectorXd anchor = anchor_weights(graph, P, weights, options);
   apply_edge_factors(options, &weights);
   std::unique_ptr<SparseLdlt> own;
-  if (!factor) {
-    own = factorize_free_block(graph, weights, anchor, options);
+  if (!factor && !multigrid) {
+    own = factorize_free_block(free_block(graph, weights, anchor, options));
     factor = own.get();
   }
-  const SparseLdlt& ldlt = *factor;
   const Eigen::MatrixX3d start = Q.bottomRows(m);
   // The right side's parts that do not change: the anchor, and the held neighbours.
   Eigen::MatrixX3d fixed_rhs = anchor.asDiagonal() * start;
@@ -299,8 +312,13 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
   int it = 0;
   bool converged = false;
   if (options.lbfgs > 0) {
-    const LbfgsDirection::InitialInverse global_solve =
-        [&](const Eigen::MatrixX3d& q, Eigen::MatrixX3d* r) { ldlt.solve(q, r); };
+    const LbfgsDirection::InitialInverse global_solve = [&](const Eigen::MatrixX3d& q,
+                                                            Eigen::MatrixX3d* r) {
+      if (multigrid)
+        arap_multigrid_vcycle(*multigrid, q, r);
+      else
+        factor->solve(q, r);
+    };
     LbfgsDirection lbfgs(options.lbfgs);
     Eigen::MatrixX3d d;
     half_gradient = &g_next;
@@ -312,11 +330,17 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       // The quasi-Newton step, halved until it lowers the energy enough (Armijo);
       // after kMaxHalvings the plain step (the history forgotten), which never raises it.
       lbfgs.direction(g, global_solve, &d);
-      for (int halvings = 0;; ++halvings) {
+      for (int halvings = 0, plain_halvings = 0;; ++halvings) {
         Q.bottomRows(m) = x + d;
         energy = fit(Q);
-        if (energy <= level + 2e-4 * g.reshaped().dot(d.reshaped()) || lbfgs.size() == 0) break;
-        if (halvings < kMaxHalvings) {
+        if (energy <= level + 2e-4 * g.reshaped().dot(d.reshaped())) break;
+        if (lbfgs.size() == 0) {
+          // A plain step by the factor is a local-global step, which never raises
+          // the energy; one by a V-cycle can overshoot, so it is halved as well.
+          if (!multigrid || plain_halvings == kMaxPlainHalvings) break;
+          d *= 0.5;
+          ++plain_halvings;
+        } else if (halvings < kMaxHalvings) {
           d *= 0.5;
         } else {
           lbfgs.reset();
@@ -346,7 +370,10 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       report_step(it, options.max_iterations);
       // d/dq_i of the energy = 0 for the free rows, R held.
       rhs = fixed_rhs + B;
-      ldlt.solve(rhs, &free);
+      if (multigrid)
+        arap_multigrid_solve(*multigrid, rhs, &free);
+      else
+        factor->solve(rhs, &free);
       const double step = (free - Q.bottomRows(m)).rowwise().norm().maxCoeff();
       x = Q.bottomRows(m);
       bool plain = !accelerate;

@@ -10,12 +10,15 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "mesh/edge_graph.h"
 #include "solvers/sparse_ldlt.h"
 
 namespace unfold {
+
+struct ArapMultigrid;  // solvers/arap_multigrid.h
 
 struct ArapSolveOptions {
   int num_fixed = 1;         ///< vertices [0, num_fixed) are held at Q's rows
@@ -73,6 +76,16 @@ struct ArapSolveReport {
 Eigen::VectorXd arap_anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
                                     const ArapSolveOptions& options);
 
+/// The matrix arap_solve's global steps solve with: the free rows' block of the
+/// graph Laplacian (weighted as options.inverse_length_weights and the edge
+/// factors) plus the anchor, L + A; symmetric positive definite when every
+/// free vertex reaches a held one.
+/// @param caller the name the errors start with
+/// @throws UsageError as arap_factorization
+Eigen::SparseMatrix<double> arap_global_matrix(const EdgeGraph& graph, const Eigen::MatrixX3d& P,
+                                               const ArapSolveOptions& options,
+                                               const std::string& caller = "arap_global_matrix");
+
 /// The factor arap_solve's global steps solve with: the free rows' block of the
 /// graph Laplacian (weighted as options.inverse_length_weights) plus the
 /// anchor. It depends on neither Q nor the rotations, so a caller can make it
@@ -99,13 +112,19 @@ std::unique_ptr<SparseLdlt> arap_factorization(const EdgeGraph& graph, const Eig
 /// @param factor arap_factorization(graph, P, options) made already, or null
 ///        (then it is made here, when there is a step to take)
 /// @param report optional: the steps taken and whether they converged
+/// @param multigrid optional, instead of a factor: arap_multigrid_precomputation(graph,
+///        P, options). L-BFGS steps take its one V-cycle as their initial inverse
+///        Hessian (more steps, about 1.2x, each cheaper); local-global steps solve by
+///        CG with it. No factorization is made (docs/performance.md, large scans)
 /// @throws UsageError if the sizes disagree, num_fixed is not in [1, n],
 ///         max_iterations < 0, tolerance < 0, anchor < 0, anderson < 0 or lbfgs < 0, or
-///         edge_factors are not one finite factor > 0 per edge
+///         edge_factors are not one finite factor > 0 per edge, or multigrid is given
+///         with a factor or with another row count
 /// @throws NumericalError if some free vertex has no path to a held one (checked
 ///         only when there is a step to take: max_iterations > 0)
 Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, Eigen::MatrixX3d Q,
                             const ArapSolveOptions& options = {},
-                            const SparseLdlt* factor = nullptr, ArapSolveReport* report = nullptr);
+                            const SparseLdlt* factor = nullptr, ArapSolveReport* report = nullptr,
+                            const ArapMultigrid* multigrid = nullptr);
 
 }  // namespace unfold

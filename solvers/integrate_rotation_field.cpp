@@ -53,6 +53,7 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
                            5, inverse_length, edge_factors},
                           {},
                           {},
+                          {},
                           {}};
   out.anchored.anchor_by_stiffness = options.anchor_weights == "stiffness";
   out.anchored.lbfgs = options.lbfgs;
@@ -76,13 +77,21 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
     rest = &r->P;
     out.reordered = std::move(r);
   }
-  if (out.anchored.max_iterations > 0 && n > 1)
+  const bool multigrid = options.lbfgs > 0 && n >= options.multigrid_vertices;
+  if (out.anchored.max_iterations > 0 && n > 1 && multigrid)
+    out.anchored_multigrid = std::async(std::launch::async, [g, rest, anchored = out.anchored] {
+      return arap_multigrid_precomputation(*g, *rest, anchored);
+    });
+  else if (out.anchored.max_iterations > 0 && n > 1)
     out.anchored_factor = std::async(std::launch::async, [g, rest, anchored = out.anchored] {
       return arap_factorization(*g, *rest, anchored);
     });
   ArapSolveOptions integrate{1, 1, 0.0, 0.0, 0, inverse_length, out.anchored.edge_factors};
-  out.positions = arap_solve(*g, *rest, std::move(out.positions), integrate);
-  if (options.pose_pull > 0 && out.anchored_factor.valid())
+  const std::unique_ptr<ArapMultigrid> integration_multigrid =
+      multigrid ? arap_multigrid_precomputation(*g, *rest, integrate) : nullptr;
+  out.positions = arap_solve(*g, *rest, std::move(out.positions), integrate, nullptr, nullptr,
+                             integration_multigrid.get());
+  if (options.pose_pull > 0 && (out.anchored_factor.valid() || out.anchored_multigrid.valid()))
     out.pull = options.pose_pull * (fit_similarity(*start, out.positions) - out.positions);
   return out;
 }
@@ -97,17 +106,24 @@ Eigen::MatrixX3d anchored_steps(const EdgeGraph& caller_graph, const Eigen::Matr
   if (integrated.anchored.max_iterations >= 0) {  // iterations > 0: integrated
     const std::unique_ptr<SparseLdlt> factor =
         integrated.anchored_factor.valid() ? integrated.anchored_factor.get() : nullptr;
-    if (factor && integrated.pull.rows() == X.rows()) {
+    const std::unique_ptr<ArapMultigrid> multigrid =
+        integrated.anchored_multigrid.valid() ? integrated.anchored_multigrid.get() : nullptr;
+    if ((factor || multigrid) && integrated.pull.rows() == X.rows()) {
       // The factor is L + A on the free rows (all but the held first): (L + A)^-1 A
       // passes the modes softer than the anchor (the pose) and damps the stiffer ones.
       const int m = int(X.rows()) - integrated.anchored.num_fixed;
       const Eigen::VectorXd A = arap_anchor_weights(graph, P, integrated.anchored);
+      const Eigen::MatrixX3d pull = A.asDiagonal() * integrated.pull.bottomRows(m);
       Eigen::MatrixX3d filtered;
-      factor->solve(A.asDiagonal() * integrated.pull.bottomRows(m), &filtered);
+      if (multigrid)
+        arap_multigrid_solve(*multigrid, pull, &filtered);
+      else
+        factor->solve(pull, &filtered);
       X.bottomRows(m) += filtered;
     }
     ArapSolveReport steps;
-    X = arap_solve(graph, P, std::move(X), integrated.anchored, factor.get(), &steps);
+    X = arap_solve(graph, P, std::move(X), integrated.anchored, factor.get(), &steps,
+                   multigrid.get());
     if (report && steps.steps > 0) *report = steps;
   }
   X.rowwise() -= X.colwise().mean();

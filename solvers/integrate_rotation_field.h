@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mesh/edge_graph.h"
+#include "solvers/arap_multigrid.h"
 #include "solvers/arap_solve.h"
 
 namespace unfold {
@@ -52,6 +53,13 @@ struct IntegrateOptions {
   /// 197k tet vertices that took the anchored steps from about 11 to 8.4 s; below
   /// about this the steps' data fit the caches (docs/performance.md, large scans)
   int locality_order_vertices = 100000;
+  /// from this many vertices, with L-BFGS steps (lbfgs > 0), the anchored steps'
+  /// initial inverse Hessian is one AMG V-cycle of their matrix instead of its
+  /// factor, and the pose pull is filtered by CG (solvers/arap_multigrid.h); the
+  /// integration's one solve is by CG as well, so no tet factorization is made. At 197k
+  /// tet vertices that took the integration and the steps from 9.9-11.7 to 7.6-8.4 s
+  /// and the run's peak memory from 0.95 to 0.71 GB (docs/performance.md, large scans)
+  int multigrid_vertices = 100000;
 };
 
 /// The graph and positions the steps run on, renumbered.
@@ -68,6 +76,8 @@ struct IntegratedRotations {
   Eigen::MatrixX3d positions;
   ArapSolveOptions anchored;                                 ///< the anchored steps' options
   std::future<std::unique_ptr<SparseLdlt>> anchored_factor;  ///< invalid: none made
+  /// from options.multigrid_vertices, instead of the factor; invalid: none made
+  std::future<std::unique_ptr<ArapMultigrid>> anchored_multigrid;
   /// pose_pull times (Q fitted to positions) - positions, filtered by the anchored
   /// steps before they start; empty: none
   Eigen::MatrixX3d pull;
@@ -78,12 +88,12 @@ struct IntegratedRotations {
 
 /// Integrates the rotation field of `Q` (best rotations from P, per vertex):
 /// one ARAP step from Q with one vertex held; with options.pose_pull, also the
-/// pull toward Q that the anchored steps filter. The anchored steps' factor
-/// depends on neither the integration nor its result: it is made on another
-/// thread meanwhile (CHOLMOD factorizes on one thread, and so does the
+/// pull toward Q that the anchored steps filter. The anchored steps' factor (or
+/// multigrid) depends on neither the integration nor its result: it is made on
+/// another thread meanwhile (CHOLMOD factorizes on one thread, and so does the
 /// integration's own factor).
 /// @param graph   edge graph of the tet mesh, connected; it and P must outlive
-///        the result's anchored_factor
+///        the result's anchored_factor and anchored_multigrid
 /// @param P       rest positions (n x 3)
 /// @param Q       positions whose rotation field is integrated (n x 3)
 /// @param lambda2 the anchor's unit, > 0: a lambda_2 (fiedler_value) of the shape, e.g.

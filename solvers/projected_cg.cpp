@@ -10,8 +10,9 @@ namespace {
 using Array6d = Eigen::Array<double, 6, 1>;
 
 // z = one V-cycle on r; returns r^T z and z's column means from one sweep
-// (r has zero mean, so r^T z is the same once z's mean is removed).
-Array6d precondition(const AmgData& amg, const RowMatrixX3d& r, RowMatrixX3d* z) {
+// (r has zero mean, so r^T z is the same once z's mean is removed), or zeros
+// for the means where none is removed.
+Array6d precondition(const AmgData& amg, const RowMatrixX3d& r, RowMatrixX3d* z, bool zero_mean) {
   amg_vcycle(amg, r, z);
   const int n = int(r.rows());
   Array6d sums = chunked_row_sum(n, [&](int i) {
@@ -19,7 +20,7 @@ Array6d precondition(const AmgData& amg, const RowMatrixX3d& r, RowMatrixX3d* z)
     v << (r.row(i).array() * z->row(i).array()).transpose(), z->row(i).array().transpose();
     return v;
   });
-  sums.tail<3>() /= n;
+  sums.tail<3>() = zero_mean ? Eigen::Array3d(sums.tail<3>() / n) : Eigen::Array3d::Zero();
   return sums;
 }
 
@@ -39,14 +40,14 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
   CgResult result;
   const int n = A.rows;
   const bool low_rank = U && U->cols() > 0;
-  remove_column_means(x);
+  if (options.zero_mean) remove_column_means(x);
   const Eigen::Array3d b_norm = column_dots(b, b).sqrt();
   CgWorkspace local;
   CgWorkspace& w = workspace ? *workspace : local;
   RowMatrixX3d &r = w.r, &z = w.z, &p = w.p, &q = w.q;
   residual(A, b, *x, &r);
   if (low_rank) r.noalias() -= *U * (U->transpose() * *x);
-  remove_column_means(&r);
+  if (options.zero_mean) remove_column_means(&r);
   Eigen::Array3d active = Eigen::Array3d::Ones();  // columns still iterating
   const auto relative = [&](const Eigen::Array3d& r_squared) {
     Eigen::Array3d rel;
@@ -57,7 +58,7 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
   const Eigen::Array3d target = (options.forcing * rel).max(options.tolerance);
   for (int k = 0; k < 3; ++k)
     if (rel[k] <= options.tolerance) active[k] = 0;
-  Array6d pre = precondition(preconditioner, r, &z);
+  Array6d pre = precondition(preconditioner, r, &z, options.zero_mean);
   Eigen::Array3d rz = pre.head<3>();
   p.setZero(n, 3);
   update_direction(z, pre.tail<3>(), Eigen::Array3d::Zero(), &p);
@@ -86,14 +87,14 @@ CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const Row
     for (int k = 0; k < 3; ++k)
       if (rel[k] <= target[k]) active[k] = 0;
     if (!active.any()) break;
-    pre = precondition(preconditioner, r, &z);
+    pre = precondition(preconditioner, r, &z, options.zero_mean);
     Eigen::Array3d beta = Eigen::Array3d::Zero();
     for (int k = 0; k < 3; ++k)
       if (active[k] && rz[k] != 0) beta[k] = pre[k] / rz[k];
     rz = pre.head<3>();
     update_direction(z, pre.tail<3>(), beta, &p);
   }
-  remove_column_means(x);
+  if (options.zero_mean) remove_column_means(x);
   result.relative_residual = rel.maxCoeff();
   result.converged = (rel <= target).all();
   return result;

@@ -19,6 +19,9 @@ struct CgOptions {
   double tolerance = 1e-8;
   double forcing = 0;
   int max_iterations = 500;
+  /// true: A is singular on the constant vector and x, r and the directions are
+  /// kept zero-mean; false: A is positive definite and no mean is removed
+  bool zero_mean = true;
 };
 
 struct CgResult {
@@ -36,10 +39,11 @@ struct CgWorkspace {
 /// Solves (A + U U^T) x = b for zero-mean x, from the zero-mean part of *x (warm
 /// start), preconditioned by one V-cycle of `preconditioner` (an AMG hierarchy
 /// of a Laplacian spectrally close to A up to scale). A column meeting negative
-/// curvature stops moving and the result says so.
+/// curvature stops moving and the result says so. With options.zero_mean false,
+/// A x = b for a positive definite A (a Laplacian plus a positive diagonal), from *x.
 /// @param U optional low-rank part (n x k; null or k = 0: none)
 /// @pre A + U U^T symmetric, maps zero-mean blocks to zero-mean blocks; b zero-mean; *x has
-///      A.rows rows
+///      A.rows rows (zero_mean false: A symmetric positive definite, any b)
 CgResult projected_cg(const CsrView& A, const AmgData& preconditioner, const RowMatrixX3d& b,
                       RowMatrixX3d* x, const CgOptions& options, CgWorkspace* workspace = nullptr,
                       const Eigen::MatrixXd* U = nullptr);

@@ -57,8 +57,9 @@ int aggregate(const RowSparse& A, double strength, std::vector<int>* aggregate_o
 }
 
 // Largest eigenvalue of D^-1 A: a few power steps in the D inner product (a
-// lower estimate, raised by 10 %), capped by Gershgorin's bound.
-double estimate_lambda_max(const RowSparse& A, const Eigen::VectorXd& inverse_diagonal) {
+// lower estimate, raised by 10 %), capped by Gershgorin's bound; or that bound alone.
+double estimate_lambda_max(const RowSparse& A, const Eigen::VectorXd& inverse_diagonal,
+                           bool gershgorin_only) {
   const int n = int(A.rows());
   double gershgorin = 0;
   for (int i = 0; i < n; ++i) {
@@ -66,6 +67,7 @@ double estimate_lambda_max(const RowSparse& A, const Eigen::VectorXd& inverse_di
     for (RowSparse::InnerIterator it(A, i); it; ++it) row += std::abs(it.value());
     gershgorin = std::max(gershgorin, row * inverse_diagonal[i]);
   }
+  if (gershgorin_only) return gershgorin;
   std::mt19937_64 random(1);
   std::uniform_real_distribution<double> unit(-1, 1);
   Eigen::VectorXd v(n);
@@ -82,7 +84,7 @@ double estimate_lambda_max(const RowSparse& A, const Eigen::VectorXd& inverse_di
   return std::min(gershgorin, 1.1 * estimate);
 }
 
-void build_level(AmgLevel* level) {
+void build_level(AmgLevel* level, bool gershgorin_lambda_max) {
   const int n = int(level->A.rows());
   level->inverse_diagonal.resize(n);
   for (int i = 0; i < n; ++i) {
@@ -92,7 +94,7 @@ void build_level(AmgLevel* level) {
                        " is not positive");
     level->inverse_diagonal[i] = 1 / d;
   }
-  level->lambda_max = estimate_lambda_max(level->A, level->inverse_diagonal);
+  level->lambda_max = estimate_lambda_max(level->A, level->inverse_diagonal, gershgorin_lambda_max);
 }
 
 // Chebyshev polynomial smoothing of A x = b with the Jacobi preconditioner
@@ -195,7 +197,7 @@ void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& 
   for (;;) {
     AmgLevel& level = data->levels.back();
     level.A.makeCompressed();
-    build_level(&level);
+    build_level(&level, options.gershgorin_lambda_max);
     nonzeros += double(level.A.nonZeros());
     const int n = int(level.A.rows());
     if (n <= options.coarse_size || int(data->levels.size()) >= options.max_levels) break;

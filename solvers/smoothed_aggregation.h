@@ -21,6 +21,11 @@ struct AmgOptions {
   int smoothing_degree = 2;  ///< Chebyshev polynomial degree, pre and post
   /// the smoother damps the eigenvalues of D^-1 A in [lambda_max / ratio, lambda_max]
   double smoothing_ratio = 10;
+  /// true: the smoother's lambda_max is Gershgorin's bound, never below the true
+  /// one, so the V-cycle stays positive definite (the power steps' estimate can
+  /// fall below it on a large mesh, and the smoother then amplifies the modes
+  /// above it); false: the power steps' estimate, raised by 10 %, a faster smoother
+  bool gershgorin_lambda_max = false;
   /// V-cycle in float (the hierarchy is built in double): its sparse products
   /// move half the bytes, 10-15 % off the global step at 75k vertices
   /// (docs/history/performance.md). A preconditioner need only be close to M^+; the

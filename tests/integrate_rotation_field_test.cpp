@@ -195,6 +195,34 @@ TEST(IntegrateRotationField, RenumberingChangesOnlyTheRounding) {
   EXPECT_EQ(in_order.steps, renumbered.steps);
 }
 
+// From options.multigrid_vertices the anchored steps (L-BFGS) use a V-cycle
+// for their factor and CG for the pull's filter: no factor is made, and run to
+// a tight tolerance they end where the factor's steps do.
+TEST(IntegrateRotationField, AMultigridEndsWhereTheFactorDoes) {
+  const Grid g(40);  // 656 vertices: a hierarchy of two levels
+  Eigen::MatrixX3d Q = 1.4 * g.mesh.V;
+  Q.col(1) += 2 * (0.1 * g.mesh.V.col(0)).array().sin().matrix();
+  IntegrateOptions options = pulled(2000, 0.5);
+  options.anchor_weights = "stiffness";
+  options.lbfgs = 5;
+  options.tolerance = 1e-9;
+  ArapSolveReport by_factor, by_multigrid;
+  const Eigen::MatrixX3d X = anchored_steps(
+      g.graph, g.mesh.V, integrate_rotations(g.graph, g.mesh.V, Q, g.lambda2, options), &by_factor);
+  options.multigrid_vertices = 0;
+  IntegratedRotations r = integrate_rotations(g.graph, g.mesh.V, Q, g.lambda2, options);
+  EXPECT_TRUE(r.anchored_multigrid.valid());
+  EXPECT_FALSE(r.anchored_factor.valid());
+  const Eigen::MatrixX3d Y = anchored_steps(g.graph, g.mesh.V, std::move(r), &by_multigrid);
+  EXPECT_TRUE(by_factor.converged);
+  EXPECT_TRUE(by_multigrid.converged);
+  EXPECT_LT((X - Y).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_GT((X - g.centred()).cwiseAbs().maxCoeff(), 0.1);  // the steps moved it
+  options.lbfgs = 0;                                        // local-global steps need the factor
+  EXPECT_TRUE(
+      integrate_rotations(g.graph, g.mesh.V, Q, g.lambda2, options).anchored_factor.valid());
+}
+
 TEST(IntegrateRotationField, RefusesBadOptions) {
   const Grid g;
   EXPECT_THROW(integrate_rotation_field(g.graph, g.mesh.V, g.mesh.V, g.lambda2, steps(-1)),
