@@ -103,6 +103,39 @@ TEST(Amg, VCycleIsSymmetricForEverySmoothingDegree) {
   }
 }
 
+// With gershgorin_lambda_max every level's smoother bound is at or above the
+// largest eigenvalue of D^-1 A (computed densely), where the power steps'
+// estimate is below Gershgorin's bound; the cycle stays symmetric.
+TEST(Amg, AGershgorinBoundIsNeverBelowTheLargestEigenvalue) {
+  const LaplacianFixture f(bar());
+  AmgOptions options;
+  options.single_precision = false;
+  options.gershgorin_lambda_max = true;
+  AmgData amg;
+  amg_precomputation(f.L, options, &amg);
+  ASSERT_EQ(amg.levels.size(), f.amg.levels.size());
+  for (size_t l = 0; l < amg.levels.size(); ++l) {
+    const Eigen::MatrixXd A(amg.levels[l].A);
+    const Eigen::VectorXd s = amg.levels[l].inverse_diagonal.cwiseSqrt();
+    // D^-1 A is similar to D^-1/2 A D^-1/2, which is symmetric.
+    const Eigen::MatrixXd scaled = s.asDiagonal() * A * s.asDiagonal();
+    const double largest =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scaled).eigenvalues().maxCoeff();
+    EXPECT_GE(amg.levels[l].lambda_max, largest * (1 - 1e-12)) << "level " << l;
+    EXPECT_GE(amg.levels[l].lambda_max, f.amg.levels[l].lambda_max) << "level " << l;
+  }
+  EXPECT_GT(amg.levels[0].lambda_max, f.amg.levels[0].lambda_max);  // not the estimate
+  const RowMatrixX3d x = random_zero_mean(f.n, 6), y = random_zero_mean(f.n, 7);
+  RowMatrixX3d Bx, By;
+  amg_vcycle(amg, x, &Bx);
+  amg_vcycle(amg, y, &By);
+  const Eigen::Array3d yBx = column_dots(y, Bx), xBy = column_dots(x, By), xBx = column_dots(x, Bx);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(yBx[k], xBy[k], 1e-10 * xBx[k]);
+    EXPECT_GT(xBx[k], 0);
+  }
+}
+
 TEST(Amg, AsAStationaryIterationItConverges) {
   const LaplacianFixture f(bar());
   const RowMatrixX3d b = random_zero_mean(f.n, 3);
