@@ -328,7 +328,7 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
       x = Q.bottomRows(m);
       double energy = 0;
       // The quasi-Newton step, halved until it lowers the energy enough (Armijo);
-      // after kMaxHalvings the plain step (the history forgotten), which never raises it.
+      // after kMaxHalvings the plain step (the history forgotten).
       lbfgs.direction(g, global_solve, &d);
       for (int halvings = 0, plain_halvings = 0;; ++halvings) {
         Q.bottomRows(m) = x + d;

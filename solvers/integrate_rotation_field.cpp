@@ -78,11 +78,12 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
     out.reordered = std::move(r);
   }
   const bool multigrid = options.lbfgs > 0 && n >= options.multigrid_vertices;
-  if (out.anchored.max_iterations > 0 && n > 1 && multigrid)
+  const bool steps_follow = out.anchored.max_iterations > 0 && n > 1;
+  if (steps_follow && multigrid)
     out.anchored_multigrid = std::async(std::launch::async, [g, rest, anchored = out.anchored] {
       return arap_multigrid_precomputation(*g, *rest, anchored);
     });
-  else if (out.anchored.max_iterations > 0 && n > 1)
+  else if (steps_follow)
     out.anchored_factor = std::async(std::launch::async, [g, rest, anchored = out.anchored] {
       return arap_factorization(*g, *rest, anchored);
     });
@@ -91,7 +92,7 @@ IntegratedRotations integrate_rotations(const EdgeGraph& graph, const Eigen::Mat
       multigrid ? arap_multigrid_precomputation(*g, *rest, integrate) : nullptr;
   out.positions = arap_solve(*g, *rest, std::move(out.positions), integrate, nullptr, nullptr,
                              integration_multigrid.get());
-  if (options.pose_pull > 0 && (out.anchored_factor.valid() || out.anchored_multigrid.valid()))
+  if (options.pose_pull > 0 && steps_follow)
     out.pull = options.pose_pull * (fit_similarity(*start, out.positions) - out.positions);
   return out;
 }

@@ -70,7 +70,7 @@ struct LocalityOrdered {
 };
 
 /// The first step done (integrate_rotations) and what the anchored steps after
-/// it need: their factorization, being made on another thread meanwhile.
+/// it need: their factorization or multigrid, being made on another thread meanwhile.
 struct IntegratedRotations {
   /// the integrated field (n x 3; in `reordered`'s order if any); Q when iterations is 0
   Eigen::MatrixX3d positions;
@@ -81,8 +81,8 @@ struct IntegratedRotations {
   /// pose_pull times (Q fitted to positions) - positions, filtered by the anchored
   /// steps before they start; empty: none
   Eigen::MatrixX3d pull;
-  /// from options.locality_order_vertices: what the steps run on (the factor refers to it,
-  /// so it is held here); null: the caller's graph and P
+  /// from options.locality_order_vertices: what the steps run on (the factor or multigrid
+  /// refers to it, so it is held here); null: the caller's graph and P
   std::unique_ptr<const LocalityOrdered> reordered;
 };
 
