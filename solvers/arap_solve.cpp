@@ -32,6 +32,14 @@ constexpr int kMaxHalvings = 3;
 // With a multigrid, halvings of the plain step (a descent direction, not a
 // local-global step) before the steps count as converged.
 constexpr int kMaxPlainHalvings = 10;
+// L-BFGS steps: the initial inverse Hessian is scaled by the global matrix's
+// curvature along the last step over the energy's, s.(L + A) s / s.y, kept in
+// [1, this]. Rotations held, L + A is stiffer than the energy along a thin
+// part's bending (2-14x on cat0's ears), so unscaled steps fall short there.
+// Measured caps of 4, 10 and 1000: to convergence 67, 71 and 74 steps on cat0
+// (90 unscaled), 103, 98 and 98 on david0 (123); 4 takes the fewest energy
+// evaluations, 76 and 114 (docs/performance.md, the anchored steps' convergence).
+constexpr double kMaxInitialScale = 4;
 
 // Edge factors: none, or one finite positive number per edge.
 void check_edge_factors(const EdgeGraph& graph, const ArapSolveOptions& options,
@@ -321,6 +329,9 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
     };
     LbfgsDirection lbfgs(options.lbfgs);
     Eigen::MatrixX3d d;
+    // B at the last iterate: g' - g = (L + A) s - (B' - B) gives s.(L + A) s
+    // without a product with the matrix.
+    Eigen::MatrixX3d B_before = B;
     half_gradient = &g_next;
     while (it < options.max_iterations) {
       ++it;
@@ -353,7 +364,11 @@ Eigen::MatrixX3d arap_solve(const EdgeGraph& graph, const Eigen::MatrixX3d& P, E
         break;
       }
       level = energy;
-      lbfgs.update(d, g_next, g);
+      const double sy = d.reshaped().dot((g_next - g).reshaped());
+      if (lbfgs.update(d, g_next, g))
+        lbfgs.scale_initial_inverse(std::clamp(
+            (sy + d.reshaped().dot((B - B_before).reshaped())) / sy, 1.0, kMaxInitialScale));
+      B_before = B;
       g.swap(g_next);
       if (d.rowwise().norm().maxCoeff() <= options.tolerance * radius) {
         converged = true;

@@ -51,7 +51,8 @@ struct ArapSolveOptions {
   /// back (docs/method.md, the anchor).
   bool anchor_by_stiffness = false;
   /// L-BFGS window: > 0, quasi-Newton steps instead of local-global ones
-  /// (LbfgsDirection, the global step's factor their initial inverse Hessian;
+  /// (LbfgsDirection, the global step's factor their initial inverse Hessian, scaled
+  /// by its curvature along the last step over the energy's, in [1, 4];
   /// anderson unused), each halved until it lowers the energy enough, after
   /// three halvings a plain step; the steps' count to a tolerance drops
   /// several-fold where soft modes make local-global steps crawl

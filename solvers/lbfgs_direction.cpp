@@ -45,6 +45,7 @@ void LbfgsDirection::direction(const Eigen::MatrixX3d& g, const InitialInverse& 
     });
   }
   h0(q_, d);
+  if (count_ > 0 && scale_ != 1) *d *= scale_;
   // Oldest to newest: d += (alpha_k - rho_k y_k.d) s_k, each sweep taking the
   // next pair's y.d; the last one also turns d into -H g.
   auto r = flat(*d);

@@ -37,16 +37,27 @@ class LbfgsDirection {
   bool update(const Eigen::MatrixX3d& s, const Eigen::MatrixX3d& g_after,
               const Eigen::MatrixX3d& g_before);
 
-  /// Forgets every pair (the next direction is -H0 g).
-  void reset() { count_ = 0; }
+  /// Scales the initial inverse Hessian of the directions that use kept pairs:
+  /// gamma H0 instead of H0 (Nocedal and Wright's gamma = s.y / y.y, with H0's
+  /// own curvature: gamma = s.H0^-1 s / s.y makes the scaled H0 as stiff along
+  /// the newest step as the function was). A direction without pairs stays -H0 g.
+  /// @pre gamma > 0 and finite (unchecked)
+  void scale_initial_inverse(double gamma) { scale_ = gamma; }
+
+  /// Forgets every pair and the scale (the next direction is -H0 g).
+  void reset() {
+    count_ = 0;
+    scale_ = 1;
+  }
 
   /// Pairs held.
   int size() const { return count_; }
 
  private:
   int window_;
-  int count_ = 0;    // pairs held: ring slots [0, count_)
-  int newest_ = -1;  // the slot of the newest pair
+  int count_ = 0;     // pairs held: ring slots [0, count_)
+  int newest_ = -1;   // the slot of the newest pair
+  double scale_ = 1;  // of H0, with pairs
   std::vector<Eigen::MatrixX3d> s_, y_;
   std::vector<double> rho_, alpha_;  // 1 / s.y per slot; the first loop's coefficients
   Eigen::MatrixX3d q_;

@@ -1,7 +1,9 @@
 // L-BFGS directions: with no pairs the initial inverse Hessian's step; the
 // newest pair's secant condition holds; pairs without curvature are left out;
 // with exact line searches on a quadratic the steps reach its minimum in as
-// many steps as it has dimensions, as conjugate gradients do.
+// many steps as it has dimensions, as conjugate gradients do; an initial inverse
+// scaled to the function's curvature along the last step gives Newton's direction
+// on a quadratic.
 #include "solvers/lbfgs_direction.h"
 
 #include <gtest/gtest.h>
@@ -82,6 +84,40 @@ TEST(LbfgsDirection, MinimisesAQuadraticInAsManyExactStepsAsItHasDimensions) {
     g = g_after;
   }
   EXPECT_LT(g.norm(), 1e-9 * start);
+}
+
+// An initial inverse four times too stiff (H0 = A^-1 / 4), scaled by s.H0^-1 s / s.y = 4 from
+// one pair on a quadratic, is A^-1: the direction is Newton's. Unscaled it is not; without
+// pairs the scale is not used.
+TEST(LbfgsDirection, ScaledInitialInverseGivesNewtonsDirectionOnAQuadratic) {
+  const Eigen::MatrixXd A = spd6();
+  const Eigen::MatrixXd stiff_inverse = A.inverse() / 4;
+  const auto h0 = [&](const Eigen::MatrixX3d& q, Eigen::MatrixX3d* r) {
+    *r = apply(stiff_inverse, q);
+  };
+  const Eigen::MatrixX3d s = Eigen::MatrixX3d::Random(2, 3), g = Eigen::MatrixX3d::Random(2, 3);
+  const Eigen::MatrixX3d y = apply(A, s);
+  const Eigen::MatrixX3d newton = -apply(A.inverse(), g);
+  LbfgsDirection lbfgs(3);
+  Eigen::MatrixX3d d;
+  lbfgs.scale_initial_inverse(4);
+  lbfgs.direction(g, h0, &d);
+  EXPECT_LT((d + apply(stiff_inverse, g)).norm(), 1e-12 * d.norm());
+  ASSERT_TRUE(lbfgs.update(s, y, Eigen::MatrixX3d::Zero(2, 3)));
+  const double gamma =
+      s.reshaped().dot(apply(4 * A, s).reshaped()) / s.reshaped().dot(y.reshaped());
+  EXPECT_NEAR(gamma, 4, 1e-12);
+  lbfgs.scale_initial_inverse(1);
+  lbfgs.direction(g, h0, &d);
+  EXPECT_GT((d - newton).norm(), 0.01 * newton.norm());
+  lbfgs.scale_initial_inverse(gamma);
+  lbfgs.direction(g, h0, &d);
+  EXPECT_LT((d - newton).norm(), 1e-10 * newton.norm());
+  lbfgs.reset();  // the scale goes with the pairs
+  ASSERT_TRUE(lbfgs.update(s, y, Eigen::MatrixX3d::Zero(2, 3)));
+  Eigen::MatrixX3d unscaled;
+  lbfgs.direction(g, h0, &unscaled);
+  EXPECT_GT((unscaled - newton).norm(), 0.01 * newton.norm());
 }
 
 // Long vectors are swept on all threads, in fixed segments: the same bits on one.
