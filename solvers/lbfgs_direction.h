@@ -53,6 +53,10 @@ class LbfgsDirection {
   /// Pairs held.
   int size() const { return count_; }
 
+  /// s.y of the newest pair kept (> 0).
+  /// @pre size() > 0 (unchecked)
+  double newest_curvature() const { return 1 / rho_[size_t(newest_)]; }
+
  private:
   int window_;
   int count_ = 0;     // pairs held: ring slots [0, count_)

@@ -87,8 +87,8 @@ TEST(LbfgsDirection, MinimisesAQuadraticInAsManyExactStepsAsItHasDimensions) {
 }
 
 // An initial inverse four times too stiff (H0 = A^-1 / 4), scaled by s.H0^-1 s / s.y = 4 from
-// one pair on a quadratic, is A^-1: the direction is Newton's. Unscaled it is not; without
-// pairs the scale is not used.
+// one pair on a quadratic (s.y as the pair keeps it), is A^-1: the direction is Newton's. Unscaled
+// it is not; without pairs the scale is not used.
 TEST(LbfgsDirection, ScaledInitialInverseGivesNewtonsDirectionOnAQuadratic) {
   const Eigen::MatrixXd A = spd6();
   const Eigen::MatrixXd stiff_inverse = A.inverse() / 4;
@@ -104,8 +104,9 @@ TEST(LbfgsDirection, ScaledInitialInverseGivesNewtonsDirectionOnAQuadratic) {
   lbfgs.direction(g, h0, &d);
   EXPECT_LT((d + apply(stiff_inverse, g)).norm(), 1e-12 * d.norm());
   ASSERT_TRUE(lbfgs.update(s, y, Eigen::MatrixX3d::Zero(2, 3)));
-  const double gamma =
-      s.reshaped().dot(apply(4 * A, s).reshaped()) / s.reshaped().dot(y.reshaped());
+  EXPECT_NEAR(lbfgs.newest_curvature(), s.reshaped().dot(y.reshaped()),
+              1e-12 * s.norm() * y.norm());
+  const double gamma = s.reshaped().dot(apply(4 * A, s).reshaped()) / lbfgs.newest_curvature();
   EXPECT_NEAR(gamma, 4, 1e-12);
   lbfgs.scale_initial_inverse(1);
   lbfgs.direction(g, h0, &d);
