@@ -24,6 +24,7 @@ struct ArapSolveOptions {
   int num_fixed = 1;         ///< vertices [0, num_fixed) are held at Q's rows
   int max_iterations = 200;  ///< local-global steps at most
   /// stop when a step moves every free vertex by less than this times Q's RMS radius
+  /// (L-BFGS steps: a step taken whole, neither halved nor the plain step after a reset)
   double tolerance = 1e-7;
   /// weight a of a |q_i - q_i^start|^2 per free vertex, in units of the
   /// uniform graph Laplacian (whose diagonal is the degree; shared among the
