@@ -92,41 +92,56 @@ Eigen::VectorXd anchor_weights(const EdgeGraph& graph, const Eigen::MatrixX3d& P
   return a;
 }
 
-// The weighted graph Laplacian: L_ij = -w_ij, L_ii = sum_j w_ij.
-Eigen::SparseMatrix<double> weighted_laplacian(const EdgeGraph& graph,
-                                               const std::vector<double>& w) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(4 * size_t(graph.num_edges()));
-  for (int e = 0; e < graph.num_edges(); ++e) {
-    const int a = graph.edges(e, 0), b = graph.edges(e, 1);
-    entries.emplace_back(a, a, w[size_t(e)]);
-    entries.emplace_back(b, b, w[size_t(e)]);
-    entries.emplace_back(a, b, -w[size_t(e)]);
-    entries.emplace_back(b, a, -w[size_t(e)]);
-  }
-  Eigen::SparseMatrix<double> L(graph.num_vertices, graph.num_vertices);
-  L.setFromTriplets(entries.begin(), entries.end());
-  return L;
-}
-
-// arap_global_matrix with the edge weights computed already (m >= 1 free rows).
+// arap_global_matrix with the edge weights computed already (m >= 1 free rows):
+// the free vertices' block of the graph Laplacian (L_ij = -w_ij, L_ii = sum_j
+// w_ij over every neighbour, held ones too: their edges go to the right side),
+// plus the anchor. Assembled column by column from the graph's ascending
+// neighbour lists, in parallel: a sort of triplets took 0.3 s at 196k tet
+// vertices. Each diagonal sums its edges in the graph's edge order and every
+// edge keeps its entry even at weight 0, as a triplet assembly would.
 Eigen::SparseMatrix<double> free_block(const EdgeGraph& graph, const std::vector<double>& weights,
                                        const Eigen::VectorXd& anchor,
                                        const ArapSolveOptions& options) {
-  const int m = graph.num_vertices - options.num_fixed;
-  // The free vertices' block of the graph Laplacian (plus the anchor); edges
-  // to held vertices go to the right side.
-  Eigen::SparseMatrix<double> L = (options.inverse_length_weights || !options.edge_factors.empty()
-                                       ? weighted_laplacian(graph, weights)
-                                       : graph_laplacian(graph))
-                                      .bottomRightCorner(m, m);
-  if (options.anchor > 0) {
-    Eigen::SparseMatrix<double> A(m, m);
-    std::vector<Eigen::Triplet<double>> diagonal;
-    diagonal.reserve(size_t(m));
-    for (int i = 0; i < m; ++i) diagonal.emplace_back(i, i, anchor(i));
-    A.setFromTriplets(diagonal.begin(), diagonal.end());
-    L += A;
+  const int num_fixed = options.num_fixed, m = graph.num_vertices - num_fixed;
+  const bool uniform = !options.inverse_length_weights && options.edge_factors.empty();
+  const bool anchored = options.anchor > 0;
+  // A diagonal entry: always with uniform weights (the degree, 0 included) or
+  // an anchor, else where the vertex has an edge.
+  const auto has_diagonal = [&](int i) {
+    return uniform || anchored || graph.offsets[size_t(i) + 1] > graph.offsets[size_t(i)];
+  };
+  Eigen::SparseMatrix<double> L(m, m);
+  int* outer = L.outerIndexPtr();
+  outer[0] = 0;
+  for (int c = 0; c < m; ++c) {
+    const int i = c + num_fixed;
+    int entries = has_diagonal(i) ? 1 : 0;
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k)
+      if (graph.neighbors[size_t(k)] >= num_fixed) ++entries;
+    outer[c + 1] = outer[c] + entries;
+  }
+  L.resizeNonZeros(outer[m]);
+  int* inner = L.innerIndexPtr();
+  double* value = L.valuePtr();
+#pragma omp parallel for schedule(static) if (m >= kMinParallelRows)
+  for (int c = 0; c < m; ++c) {
+    const int i = c + num_fixed;
+    int slot = outer[c], diagonal_slot = -1;
+    double diagonal = 0;
+    for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
+      const int j = graph.neighbors[size_t(k)];
+      const double w = uniform ? 1.0 : weights[size_t(graph.neighbor_edge[size_t(k)])];
+      diagonal += w;
+      if (j > i && diagonal_slot < 0 && has_diagonal(i)) diagonal_slot = slot++;
+      if (j < num_fixed) continue;
+      inner[slot] = j - num_fixed;
+      value[slot++] = -w;
+    }
+    if (diagonal_slot < 0 && has_diagonal(i)) diagonal_slot = slot++;
+    if (diagonal_slot >= 0) {
+      inner[diagonal_slot] = c;
+      value[diagonal_slot] = anchored ? diagonal + anchor(c) : diagonal;
+    }
   }
   return L;
 }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/errors.h"
 #include "geometry/best_rotation.h"
 #include "mesh/best_rotations.h"
@@ -364,6 +366,50 @@ TEST(ArapSolve, AnAnchorSharedByStiffnessIsTheEnergyMinimised) {
             shared_anchor_energy(graph, g.mesh.V, shared, bent, a_alike));
   options.edge_factors.assign(size_t(graph.num_edges()), 0.5);
   EXPECT_EQ(arap_anchor_weights(graph, g.mesh.V, options), a_shared);
+}
+
+// The global matrix is the free rows' block of sum_e w_e (u_a - u_b)(u_a - u_b)^T
+// (w_e: 1 / rest length scaled to mean 1, times the edge's factor) plus the
+// anchor's diagonal, one entry per free-free edge and per diagonal; with uniform
+// weights and no anchor, exactly the graph Laplacian's block.
+TEST(ArapSolve, TheGlobalMatrixIsTheWeightedLaplaciansFreeBlockPlusTheAnchor) {
+  const BoundaryFirstGrid g;
+  const EdgeGraph graph = build_edge_graph(int(g.mesh.V.rows()), g.mesh.T);
+  const int n = graph.num_vertices, num_fixed = g.num_boundary, m = n - num_fixed;
+  ArapSolveOptions uniform = held(num_fixed);
+  const Eigen::SparseMatrix<double> L = graph_laplacian(graph);
+  EXPECT_EQ(Eigen::MatrixXd(arap_global_matrix(graph, g.mesh.V, uniform)),
+            Eigen::MatrixXd(L).bottomRightCorner(m, m));
+
+  ArapSolveOptions options = held(num_fixed);
+  options.inverse_length_weights = true;
+  options.anchor = 0.3;
+  options.anchor_by_stiffness = true;
+  options.edge_factors.resize(size_t(graph.num_edges()));
+  std::vector<double> w(size_t(graph.num_edges()));
+  double sum = 0;
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    w[size_t(e)] = 1 / (g.mesh.V.row(graph.edges(e, 0)) - g.mesh.V.row(graph.edges(e, 1))).norm();
+    sum += w[size_t(e)];
+    options.edge_factors[size_t(e)] = 1 + 0.5 * std::sin(double(e));
+  }
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(n, n);
+  int free_edges = 0;
+  for (int e = 0; e < graph.num_edges(); ++e) {
+    const int a = graph.edges(e, 0), b = graph.edges(e, 1);
+    const double we = w[size_t(e)] * graph.num_edges() / sum * options.edge_factors[size_t(e)];
+    expected(a, a) += we;
+    expected(b, b) += we;
+    expected(a, b) -= we;
+    expected(b, a) -= we;
+    free_edges += a >= num_fixed && b >= num_fixed;
+  }
+  Eigen::MatrixXd block = expected.bottomRightCorner(m, m);
+  block.diagonal() += arap_anchor_weights(graph, g.mesh.V, options);
+  const Eigen::SparseMatrix<double> M = arap_global_matrix(graph, g.mesh.V, options);
+  EXPECT_EQ(M.nonZeros(), m + 2 * free_edges);
+  EXPECT_LT((Eigen::MatrixXd(M) - block).cwiseAbs().maxCoeff(),
+            1e-12 * block.cwiseAbs().maxCoeff());
 }
 
 TEST(ArapSolve, RefusesMismatchedSizesAndNothingFixed) {
