@@ -10,7 +10,7 @@ namespace unfold {
 /// whenever it grows or is trimmed. Without it each stage's n x 3 buffers,
 /// sparse matrices and factors are faulted in again: david0's paper config
 /// takes 140k page faults without it and 77k with it, 16 % less time (the
-/// default 7 %); a 1.2M-vertex scan 7.6M faults against 3.3M with blocks up
+/// default 7 %); a 1.2M-vertex scan 7.6M faults against 3.4M with blocks up
 /// to 4 MB only (docs/performance.md).
 /// Process-wide; elsewhere a no-op.
 void keep_freed_memory();

@@ -126,18 +126,19 @@ Eigen::SparseMatrix<double> free_block(const EdgeGraph& graph, const std::vector
 #pragma omp parallel for schedule(static) if (m >= kMinParallelRows)
   for (int c = 0; c < m; ++c) {
     const int i = c + num_fixed;
+    const bool diagonal_entry = has_diagonal(i);
     int slot = outer[c], diagonal_slot = -1;
     double diagonal = 0;
     for (int k = graph.offsets[size_t(i)]; k < graph.offsets[size_t(i) + 1]; ++k) {
       const int j = graph.neighbors[size_t(k)];
       const double w = uniform ? 1.0 : weights[size_t(graph.neighbor_edge[size_t(k)])];
       diagonal += w;
-      if (j > i && diagonal_slot < 0 && has_diagonal(i)) diagonal_slot = slot++;
+      if (j > i && diagonal_entry && diagonal_slot < 0) diagonal_slot = slot++;
       if (j < num_fixed) continue;
       inner[slot] = j - num_fixed;
       value[slot++] = -w;
     }
-    if (diagonal_slot < 0 && has_diagonal(i)) diagonal_slot = slot++;
+    if (diagonal_entry && diagonal_slot < 0) diagonal_slot = slot++;
     if (diagonal_slot >= 0) {
       inner[diagonal_slot] = c;
       value[diagonal_slot] = anchored ? diagonal + anchor(c) : diagonal;
