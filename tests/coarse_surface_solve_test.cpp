@@ -95,6 +95,35 @@ TEST(ProlongSurfaceSolve, RecoversASimilarityOfTheWholeSurface) {
   EXPECT_LT((S - expected).cwiseAbs().maxCoeff(), 1e-8);
 }
 
+// The CG route (large surfaces) solves the factor route's systems: from a
+// coarse solution that bends the surface (each cluster turned by its own
+// angle), the two agree to CG's tolerance, and the CG route too recovers a
+// whole-surface similarity.
+TEST(ProlongSurfaceSolve, TheCgRouteAgreesWithTheFactor) {
+  const SurfaceMesh sphere = test::uv_sphere(40, 40);
+  const int n = int(sphere.V.rows());
+  const SurfaceCoarsening c = coarsen_surface(sphere, 2);
+  const EdgeGraph graph = build_edge_graph(n, Eigen::MatrixXi(triangulate_faces(sphere)));
+  Eigen::MatrixX3d bent = c.V;
+  for (Eigen::Index k = 0; k < bent.rows(); ++k)
+    bent.row(k) =
+        c.V.row(k) *
+        Eigen::AngleAxisd(0.8 * c.V(k, 2), Eigen::Vector3d::UnitZ()).toRotationMatrix().transpose();
+  const Eigen::MatrixX3d by_factor = prolong_surface_solve(graph, sphere.V, c, bent, n + 1);
+  const Eigen::MatrixX3d by_cg = prolong_surface_solve(graph, sphere.V, c, bent, 0);
+  const double radius = std::sqrt(by_factor.rowwise().squaredNorm().mean());
+  const double apart = (by_cg - by_factor).rowwise().norm().maxCoeff() / radius;
+  EXPECT_GT((by_factor - sphere.V).cwiseAbs().maxCoeff(), 0.1 * radius);  // it did bend
+  EXPECT_LT(apart, 1e-4);
+  EXPECT_GT(apart, 0);  // two routes, not one
+
+  const Eigen::Matrix3d R = test::random_rotation(5);
+  const Eigen::MatrixX3d Sc = (2.5 * c.V * R.transpose()).rowwise() + Eigen::RowVector3d(1, 2, 3);
+  const Eigen::MatrixX3d S = prolong_surface_solve(graph, sphere.V, c, Sc, 0);
+  const Eigen::MatrixX3d centred = sphere.V.rowwise() - sphere.V.colwise().mean();
+  EXPECT_LT((S - 2.5 * centred * R.transpose()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
 TEST(ProlongSurfaceSolve, MismatchedSizesAreUsageErrors) {
   const SurfaceMesh sphere = test::uv_sphere(10, 10);
   const SurfaceCoarsening c = coarsen_surface(sphere, 1);
