@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/parallel.h"
+#include "solvers/sparse_product.h"
 
 namespace unfold {
 namespace {
@@ -183,6 +184,8 @@ AmgLevelOf<float> single_precision_level(const AmgLevel& level) {
   return single;
 }
 
+constexpr int kReservedLevels = 64;  // more than a million-vertex mesh's 6-7
+
 }  // namespace
 
 void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& options,
@@ -190,6 +193,10 @@ void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& 
   if (M.rows() != M.cols()) throw UsageError("amg_precomputation: matrix is not square");
   data->options = options;
   data->levels.clear();
+  // Room for every level up front: Eigen's sparse matrices have no move
+  // constructor, so a reallocation would copy the levels made so far (0.1-0.25 s
+  // at 186k vertices).
+  data->levels.reserve(size_t(std::clamp(options.max_levels, 1, kReservedLevels)));
   data->levels.emplace_back();
   data->levels.back().A = RowSparse(M).pruned();
   double nonzeros = 0;
@@ -213,21 +220,22 @@ void amg_precomputation(const Eigen::SparseMatrix<double>& M, const AmgOptions& 
     RowSparse P0(n, nc);
     P0.setFromTriplets(t.begin(), t.end());
     const double omega = 4.0 / (3.0 * level.lambda_max);
-    const RowSparse AP0 = level.A * P0;
+    const RowSparse AP0 = sparse_product(level.A, P0);
     const RowSparse DAP0 = level.inverse_diagonal.asDiagonal() * AP0;
     level.P = RowSparse(P0 - omega * DAP0).pruned();
     level.R = level.P.transpose();
-    const RowSparse AP = level.A * level.P;
-    const RowSparse RAP = level.R * AP;
+    const RowSparse AP = sparse_product(level.A, level.P);
+    const RowSparse RAP = sparse_product(level.R, AP);
     RowSparse coarse =
         RowSparse(0.5 * (RAP + RowSparse(RAP.transpose()))).pruned();  // exact symmetry
     data->levels.emplace_back();
-    data->levels.back().A = std::move(coarse);
+    data->levels.back().A.swap(coarse);
   }
   data->operator_complexity = nonzeros / finest;
   data->coarse_inverse = pseudo_inverse(Eigen::MatrixXd(data->levels.back().A));
   data->single_levels.clear();
   if (options.single_precision) {
+    data->single_levels.reserve(data->levels.size());
     for (const AmgLevel& level : data->levels)
       data->single_levels.push_back(single_precision_level(level));
     data->single_coarse_inverse = data->coarse_inverse.cast<float>();
