@@ -153,16 +153,12 @@ Eigen::MatrixX3d prolong_surface_solve(const EdgeGraph& graph, const Eigen::Matr
   } else {
     // In locality order: CG's sweeps then read neighbours from cache.
     const std::vector<int> order = locality_order(P);
-    Eigen::MatrixX3d P_local(n, 3);
     std::vector<int> cluster(static_cast<size_t>(n));
-    for (int k = 0; k < n; ++k) {
-      P_local.row(k) = P.row(order[size_t(k)]);
+    for (int k = 0; k < n; ++k)
       cluster[size_t(k)] = coarsening.cluster_of[size_t(order[size_t(k)])];
-    }
-    const Eigen::MatrixX3d S_local =
-        carry(permute_edge_graph(graph, order), P_local, cluster, coarsening, Sc, A, true);
     S.resize(n, 3);
-    for (int k = 0; k < n; ++k) S.row(order[size_t(k)]) = S_local.row(k);
+    S(order, Eigen::all) = carry(permute_edge_graph(graph, order), P(order, Eigen::all), cluster,
+                                 coarsening, Sc, A, true);
   }
   return S.rowwise() - S.colwise().mean();
 }
